@@ -1,0 +1,74 @@
+#include "Cli.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "libstand/InputError.hpp"
+
+namespace sylva::cli {
+
+namespace {
+std::vector<Command>& table() {
+    static std::vector<Command> t;
+    return t;
+}
+}  // namespace
+
+const std::vector<Command>& commands() { return table(); }
+
+CommandRegistration::CommandRegistration(Command c) { table().push_back(std::move(c)); }
+
+bool parse(int argc, const char* const* argv, const po::options_description& options, po::variables_map& vm,
+           const std::string& usage, const std::string& examples) {
+    po::options_description common("General");
+    common.add_options()("help,h", "print this help")(
+        "config", po::value<std::string>(), "read options from an INI file (key = value, keys as the long options)");
+    po::options_description all;
+    all.add(options).add(common);
+    po::store(po::command_line_parser(argc, argv).options(all).run(), vm);
+    if (vm.count("help")) {
+        std::cout << "usage: " << usage << "\n\n" << all << "\n";
+        if (!examples.empty()) std::cout << "Examples:\n" << examples << "\n";
+        return false;
+    }
+    if (vm.count("config")) {
+        const std::string path = vm["config"].as<std::string>();
+        std::ifstream in(path);
+        if (!in) throw InputError(path, 0, "cannot open config file");
+        try {
+            po::store(po::parse_config_file(in, options), vm);
+        } catch (const po::error& e) {
+            throw InputError(path, 0, e.what());
+        }
+    }
+    po::notify(vm);
+    return true;
+}
+
+std::vector<double> numberList(const std::string& option, const std::string& text, std::size_t n) {
+    std::vector<double> out;
+    std::stringstream ss(text);
+    std::string item;
+    while (std::getline(ss, item, ',')) {
+        errno = 0;
+        char* end = nullptr;
+        const double v = std::strtod(item.c_str(), &end);
+        if (item.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(v))
+            throw InputError("--" + option + ": '" + item + "' is not a number (expected a comma-separated list)");
+        out.push_back(v);
+    }
+    if (n != 0 && out.size() != n)
+        throw InputError("--" + option + ": expected " + std::to_string(n) + " comma-separated numbers, got " +
+                         std::to_string(out.size()) + " in '" + text + "'");
+    return out;
+}
+
+bool stderrIsTerminal() { return isatty(STDERR_FILENO) != 0; }
+
+}  // namespace sylva::cli

@@ -1,0 +1,39 @@
+#pragma once
+// The sylvarock command line: subcommands register themselves in a table (one file per
+// subcommand), and share one way of reading options from the command line and INI files.
+#include <boost/program_options.hpp>
+#include <string>
+#include <vector>
+
+namespace sylva::cli {
+
+namespace po = boost::program_options;
+
+struct Command {
+    std::string name;
+    std::string summary;  // one line for `sylvarock --help`
+    int (*run)(int argc, const char* const* argv);  // argv[0] is the subcommand's name
+};
+
+const std::vector<Command>& commands();
+
+// A file-scope instance of this in cmd_<name>.cpp puts the subcommand in the table.
+struct CommandRegistration {
+    explicit CommandRegistration(Command c);
+};
+
+// Parses argv into vm. Adds --help and --config FILE (an INI file whose keys are the long option
+// names; command-line values win over the file's). Returns false if --help was given (the usage,
+// the description and the example text were printed). Throws po::error on a bad option and
+// InputError on an unreadable config file.
+bool parse(int argc, const char* const* argv, const po::options_description& options, po::variables_map& vm,
+           const std::string& usage, const std::string& examples = {});
+
+// Splits "a,b,c" into numbers, requiring exactly n of them (n == 0: any count); throws InputError
+// naming the option on a bad list.
+std::vector<double> numberList(const std::string& option, const std::string& text, std::size_t n = 0);
+
+// True when standard error is a terminal (progress bars are drawn only then).
+bool stderrIsTerminal();
+
+}  // namespace sylva::cli

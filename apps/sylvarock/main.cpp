@@ -1,0 +1,45 @@
+// sylvarock: one executable, one subcommand per task (see Cli.hpp for how they register).
+#include <cstring>
+#include <iostream>
+
+#include "Cli.hpp"
+#include "libstand/InputError.hpp"
+
+namespace {
+
+void printUsage(std::ostream& os) {
+    os << "usage: sylvarock <command> [options]   (sylvarock <command> --help for each command's options)\n\n"
+          "How well does a mountain forest protect what lies below it from rockfall?\n\nCommands:\n";
+    for (const auto& c : sylva::cli::commands()) os << "  " << c.name << std::string(12 - c.name.size(), ' ') << c.summary << "\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help")) {
+        printUsage(argc < 2 ? std::cerr : std::cout);
+        return argc < 2 ? 2 : 0;
+    }
+    if (!std::strcmp(argv[1], "--version")) {
+        std::cout << "sylvarock 0.1.0\n";
+        return 0;
+    }
+    for (const auto& c : sylva::cli::commands()) {
+        if (c.name != argv[1]) continue;
+        try {
+            return c.run(argc - 1, argv + 1);
+        } catch (const sylva::InputError& e) {
+            std::cerr << "sylvarock " << c.name << ": error: " << e.what() << "\n";
+            return 2;
+        } catch (const boost::program_options::error& e) {
+            std::cerr << "sylvarock " << c.name << ": " << e.what() << " (see sylvarock " << c.name << " --help)\n";
+            return 2;
+        } catch (const std::exception& e) {
+            std::cerr << "sylvarock " << c.name << ": error: " << e.what() << "\n";
+            return 1;
+        }
+    }
+    std::cerr << "sylvarock: unknown command '" << argv[1] << "'\n\n";
+    printUsage(std::cerr);
+    return 2;
+}

@@ -1,0 +1,27 @@
+#pragma once
+// An error in something a user gave us (a file, an option, a scene key). It names where the
+// problem is, so the CLI can print "FILE:LINE: what" and exit non-zero instead of crashing.
+#include <stdexcept>
+#include <string>
+
+namespace sylva {
+
+class InputError : public std::runtime_error {
+public:
+    InputError(std::string file, long line, const std::string& what)
+        : std::runtime_error(format(file, line, what)), file_(std::move(file)), line_(line) {}
+    explicit InputError(const std::string& what) : std::runtime_error(what), line_(0) {}
+
+    const std::string& file() const { return file_; }
+    long line() const { return line_; }
+
+private:
+    static std::string format(const std::string& file, long line, const std::string& what) {
+        if (file.empty()) return what;
+        return line > 0 ? file + ":" + std::to_string(line) + ": " + what : file + ": " + what;
+    }
+    std::string file_;
+    long line_;
+};
+
+}  // namespace sylva

@@ -1,0 +1,59 @@
+#pragma once
+// One block released on the slope and followed until it rests, leaves the domain or runs out of time.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "libdem/Scene.hpp"
+
+namespace sylva::dem {
+
+enum class StopReason { Rest, LeftDomain, TimeLimit };
+std::string toString(StopReason r);  // "rest", "left_domain", "time_limit"
+
+struct TrajectorySample {
+    double t;
+    Vec3 position, velocity, angularVelocity;
+    double translationalEnergy, rotationalEnergy;
+};
+
+// Where the energy went, J. Closes when initial = kinetic + potential change + stored + dissipated.
+struct EnergyBudget {
+    double initialTotal = 0;     // kinetic + potential at release (potential relative to z = 0)
+    double kinetic = 0, potential = 0, stored = 0;  // at the end
+    double contactDamping = 0, friction = 0;        // dissipated
+    double imbalance = 0;        // largest |total - initial| seen, relative to the energy converted
+};
+
+struct RunResult {
+    int run = 0;
+    std::uint64_t seed = 0;
+    Vec3 release{0, 0, 0}, stop{0, 0, 0};
+    double runoutAlongSlope = 0, runoutHorizontal = 0, energyLineDeg = 0;
+    StopReason reason = StopReason::TimeLimit;
+    double maxSpeed = 0, meanSpeed = 0, maxBounce = 0;
+    double duration = 0, cpuSeconds = 0;
+    long steps = 0;
+    double meanDt = 0;
+    EnergyBudget energy;
+    std::vector<TrajectorySample> trajectory;  // filled when asked for
+};
+
+struct RunOptions {
+    bool recordTrajectory = false;
+};
+
+// Where and how a run's block starts: drawn from the run's seed alone.
+struct Release {
+    Vec3 position;
+    Quat orientation;
+};
+// Throws InputError if the point is outside the terrain.
+Release drawRelease(const Scene& scene, std::uint64_t seed);
+
+// The run's random draws (orientation, release y) come only from `seed`, so a run is the same
+// whichever thread runs it. Throws SimulationError on NaN, energy growth or an unstable forced step,
+// InputError on an impossible release (outside the terrain, inside the soil).
+RunResult simulateBlock(const Scene& scene, int run, std::uint64_t seed, const RunOptions& options = {});
+
+}  // namespace sylva::dem

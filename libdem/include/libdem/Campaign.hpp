@@ -1,0 +1,27 @@
+#pragma once
+// Many runs of one scene, spread over threads. Run i's random draws come from a seed derived from
+// (campaign seed, i) alone, so results do not depend on the number of threads or their timing.
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "libdem/BlockRun.hpp"
+
+namespace sylva::dem {
+
+std::uint64_t runSeed(std::uint64_t campaignSeed, int run);
+
+struct CampaignOptions {
+    int runs = 100;
+    std::uint64_t seed = 1;
+    int threads = 0;  // 0: all cores
+    RunOptions run;
+    // Called after each finished run (from the worker threads, serialised), e.g. for a progress bar.
+    std::function<void(const RunResult&, int done, int total)> onRunDone;
+};
+
+// Results in run order. A run that fails (SimulationError) stops the campaign with that error,
+// prefixed by the run's index and seed so it can be replayed alone.
+std::vector<RunResult> runCampaign(const Scene& scene, const CampaignOptions& options);
+
+}  // namespace sylva::dem

@@ -1,0 +1,36 @@
+#pragma once
+// What a campaign of runs says: Dist50 and the run-out distribution, lateral dispersion, energy
+// line, speeds and bounces (the figures of the paper's Sect. 3.2), and the files that hold them.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "libdem/BlockRun.hpp"
+
+namespace sylva::dem {
+
+struct CampaignSummary {
+    int runs = 0;
+    double dist50 = 0;                       // median run-out along the slope, m (Eq. 26's Dist50)
+    std::map<int, double> runoutQuantiles;   // percent -> m
+    double horizontal50 = 0;
+    double lateralSd = 0, lateralRange90 = 0;  // stop y: standard deviation, 5-95 % range, m
+    double energyLine50 = 0, energyLineMin = 0, energyLineMax = 0;  // deg
+    double meanSpeed50 = 0, maxSpeed50 = 0;  // medians over runs, m/s
+    double maxBounce50 = 0, shareBounceBelow1m = 0;
+    double cpu50 = 0;
+    double worstEnergyImbalance = 0;
+    std::map<std::string, int> stopReasons;
+};
+
+CampaignSummary summarise(const std::vector<RunResult>& runs);
+// Linear-interpolated quantile (GSL's definition) of unsorted values; p in [0, 1].
+double quantile(std::vector<double> values, double p);
+
+void writeRunsCsv(const std::string& path, const std::vector<RunResult>& runs);
+void writeSummaryJson(const std::string& path, const CampaignSummary& s, double wallSeconds, const std::string& scene);
+// One CSV per run (t,x,y,z,vx,vy,vz,wx,wy,wz,ek_translation_j,ek_rotation_j) and one legacy VTK
+// polyline per run (ParaView), in dir.
+void writeTrajectories(const std::string& dir, const std::vector<RunResult>& runs);
+
+}  // namespace sylva::dem

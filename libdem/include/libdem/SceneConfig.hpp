@@ -1,0 +1,59 @@
+#pragma once
+// Everything a scene file sets. Defaults are the paper's Table 2 and Sect. 2.3.2.
+#include <string>
+#include <vector>
+
+#include "libdem/BlockShape.hpp"
+#include "libdem/SoilContact.hpp"
+#include "libdem/Terrain.hpp"
+
+namespace sylva::dem {
+
+struct TerrainConfig {
+    std::string profile;  // slope profile CSV (x,z); paths are relative to the scene file
+    std::string dtm;      // or an ESRI ASCII grid
+    SoilBedParams soil;
+};
+
+struct ReleaseConfig {
+    double x = 100;             // m (Sect. 2.3.2)
+    double y = 100;             // m, used when yMin == yMax
+    double yMin = 100, yMax = 100;  // forest runs: Y uniform in [80, 120]
+    double fallHeight = 5;      // centre of the block above the surface, m
+    bool randomOrientation = true;  // angles uniform in [0, 180 deg) about x, y, z (Sect. 2.3.2)
+};
+
+struct IntegrationConfig {
+    double safety = 0.3;        // dt = safety x stable limit
+    double forcedDt = 0;        // > 0: use this step (refused if above the stable limit)
+    int anticipatedContacts = 4;  // the step stays stable for this many new contacts at once
+    double energyTolerance = 0.1;  // audit: allowed relative energy imbalance before a run is refused
+};
+
+struct StopConfig {
+    double restSpeed = 0.05;    // m/s: below this (and spin x radius below it) the block is resting
+    double restTime = 1.0;      // s it must stay so
+    double maxTime = 300;       // s of simulated time
+};
+
+struct SceneConfig {
+    std::string sourceFile;     // the scene file, for messages
+    TerrainConfig terrain;
+    SoilContactParams soilContact;
+    BlockSpec block;
+    ReleaseConfig release;
+    IntegrationConfig integration;
+    StopConfig stop;
+    double gravity = 9.81;
+    double trajectoryInterval = 0.05;  // s between trajectory samples
+};
+
+// Reads a scene INI file ([section] key = value) and then the overrides "section.key=value"
+// (which win). Unknown keys, bad values and missing files are InputErrors naming the file.
+SceneConfig loadScene(const std::string& path, const std::vector<std::string>& overrides = {});
+// The same with no file (defaults + overrides), for tests and scenes built in code.
+SceneConfig sceneFromOverrides(const std::vector<std::string>& overrides);
+// All keys with their defaults and meaning, for `sylvarock simulate --help-scene`.
+std::string describeSceneKeys();
+
+}  // namespace sylva::dem

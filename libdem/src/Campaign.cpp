@@ -1,0 +1,66 @@
+#include "libdem/Campaign.hpp"
+
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+#include "libdem/SimulationError.hpp"
+
+namespace sylva::dem {
+
+namespace {
+std::uint64_t splitmix64(std::uint64_t x) {
+    x += 0x9E3779B97F4A7C15ULL;
+    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    x = (x ^ (x >> 27)) * 0x94D049BB133111EBULL;
+    return x ^ (x >> 31);
+}
+}  // namespace
+
+std::uint64_t runSeed(std::uint64_t campaignSeed, int run) {
+    // gsl's mt19937 takes an unsigned long seed; keep it in 32 bits so it means the same everywhere.
+    return splitmix64(splitmix64(campaignSeed) ^ static_cast<std::uint64_t>(run)) & 0xFFFFFFFFULL;
+}
+
+std::vector<RunResult> runCampaign(const Scene& scene, const CampaignOptions& options) {
+    std::vector<RunResult> results(options.runs);
+    std::atomic<int> next{0};
+    std::mutex mutex;
+    int done = 0;
+    std::exception_ptr failure;
+    auto worker = [&] {
+        for (;;) {
+            const int i = next.fetch_add(1);
+            if (i >= options.runs) return;
+            {
+                std::lock_guard<std::mutex> lock(mutex);
+                if (failure) return;
+            }
+            try {
+                RunResult r = simulateBlock(scene, i, runSeed(options.seed, i), options.run);
+                std::lock_guard<std::mutex> lock(mutex);
+                results[i] = std::move(r);
+                ++done;
+                if (options.onRunDone) options.onRunDone(results[i], done, options.runs);
+            } catch (const SimulationError& e) {
+                std::lock_guard<std::mutex> lock(mutex);
+                if (!failure)
+                    failure = std::make_exception_ptr(SimulationError("run " + std::to_string(i) + " (seed " +
+                                                                      std::to_string(runSeed(options.seed, i)) + "): " + e.what()));
+            } catch (...) {
+                std::lock_guard<std::mutex> lock(mutex);
+                if (!failure) failure = std::current_exception();
+            }
+        }
+    };
+    int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
+    threads = std::max(1, std::min(threads, options.runs));
+    std::vector<std::thread> pool;
+    for (int k = 0; k < threads; ++k) pool.emplace_back(worker);
+    for (auto& th : pool) th.join();
+    if (failure) std::rethrow_exception(failure);
+    return results;
+}
+
+}  // namespace sylva::dem

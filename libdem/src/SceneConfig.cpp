@@ -1,0 +1,145 @@
+#include "libdem/SceneConfig.hpp"
+
+#include <boost/program_options.hpp>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "libstand/InputError.hpp"
+
+namespace sylva::dem {
+
+namespace po = boost::program_options;
+
+namespace {
+
+template <class T>
+std::string text(const T& v) {
+    std::ostringstream os;
+    os << v;  // shortest readable form (0.7, not 0.69999999999999996)
+    return os.str();
+}
+
+// One table of keys: name, target, default, meaning. The INI sections are the part before the dot.
+po::options_description sceneKeys(SceneConfig& c, std::string& shape, std::string& orientation, double& restitution) {
+    po::options_description d("Scene keys ([section] key = value, or --set section.key=value)");
+    auto& t = c.terrain;
+    auto& s = c.soilContact;
+    auto& b = c.block;
+    auto& r = c.release;
+    auto& i = c.integration;
+    auto& st = c.stop;
+    d.add_options()
+        ("terrain.profile", po::value(&t.profile), "slope profile CSV with columns x,z (m), relative to the scene file")
+        ("terrain.dtm", po::value(&t.dtm), "or a DTM as an ESRI ASCII grid (.asc)")
+        ("terrain.width_m", po::value(&t.soil.width)->default_value(t.soil.width, text(t.soil.width)), "extent across the slope of a profile terrain, m")
+        ("terrain.soil_radius_m", po::value(&t.soil.radius)->default_value(t.soil.radius, text(t.soil.radius)), "R_soil, m (Table 2: 0.7)")
+        ("terrain.roughness_m", po::value(&t.soil.roughness)->default_value(t.soil.roughness, text(t.soil.roughness)), "bump height between soil spheres, m (Table 2: 0.1)")
+        ("terrain.seed", po::value(&t.soil.seed)->default_value(t.soil.seed, text(t.soil.seed)), "seed of the rows' offsets across the slope (Fig. 7)")
+        ("soil.kn_n_m", po::value(&s.kn)->default_value(s.kn, text(s.kn)), "K_n^soil, N/m (Table 2)")
+        ("soil.kappa", po::value(&s.kappa)->default_value(s.kappa, text(s.kappa)), "K_t/K_n (Eq. 19)")
+        ("soil.damping_ratio", po::value(&s.dampingRatio)->default_value(s.dampingRatio, text(s.dampingRatio)), "alpha/alpha_cr (Eq. 15)")
+        ("soil.restitution", po::value(&restitution), "e_n instead of damping_ratio (Eq. 15)")
+        ("soil.dashpot_pulls", po::value(&s.dashpotPulls)->default_value(s.dashpotPulls, text(s.dashpotPulls)), "Eq. 14 as written (true: the dashpot may pull at the end of a rebound) or floored at zero (false, as Yade)")
+        ("soil.friction_deg", po::value(&s.frictionDeg)->default_value(s.frictionDeg, text(s.frictionDeg)), "phi^soil, degrees")
+        ("block.shape", po::value(&shape)->default_value(shape, text(shape)), "cube | cuboid | sphere")
+        ("block.volume_m3", po::value(&b.volumeM3)->default_value(b.volumeM3, text(b.volumeM3)), "volume of a cube or sphere block, m^3")
+        ("block.d1_m", po::value(&b.d1), "cuboid edge 1, m")
+        ("block.d2_m", po::value(&b.d2), "cuboid edge 2, m")
+        ("block.d3_m", po::value(&b.d3), "cuboid edge 3, m")
+        ("block.density_kg_m3", po::value(&b.densityKgM3)->default_value(b.densityKgM3, text(b.densityKgM3)), "kg/m^3 (Table 2: 2700)")
+        ("release.x_m", po::value(&r.x)->default_value(r.x, text(r.x)), "release x, m")
+        ("release.y_m", po::value(&r.y)->default_value(r.y, text(r.y)), "release y, m (fixed)")
+        ("release.y_min_m", po::value(&r.yMin), "release y drawn uniformly in [y_min_m, y_max_m]")
+        ("release.y_max_m", po::value(&r.yMax), "")
+        ("release.fall_height_m", po::value(&r.fallHeight)->default_value(r.fallHeight, text(r.fallHeight)), "block centre above the surface, m")
+        ("release.orientation", po::value(&orientation)->default_value(orientation, text(orientation)), "random (angles in [0,180) deg about x,y,z) | fixed")
+        ("integration.safety", po::value(&i.safety)->default_value(i.safety, text(i.safety)), "time step as a fraction of the stable limit")
+        ("integration.dt_s", po::value(&i.forcedDt)->default_value(i.forcedDt, text(i.forcedDt)), "force this time step (0: automatic); refused if unstable")
+        ("integration.anticipated_contacts", po::value(&i.anticipatedContacts)->default_value(i.anticipatedContacts, text(i.anticipatedContacts)), "new contacts the step must stay stable for")
+        ("integration.energy_tolerance", po::value(&i.energyTolerance)->default_value(i.energyTolerance, text(i.energyTolerance)), "relative energy imbalance that stops a run")
+        ("stop.rest_speed_m_s", po::value(&st.restSpeed)->default_value(st.restSpeed, text(st.restSpeed)), "speed under which the block rests")
+        ("stop.rest_time_s", po::value(&st.restTime)->default_value(st.restTime, text(st.restTime)), "how long it must rest, s")
+        ("stop.max_time_s", po::value(&st.maxTime)->default_value(st.maxTime, text(st.maxTime)), "simulated time limit, s")
+        ("gravity_m_s2", po::value(&c.gravity)->default_value(c.gravity, text(c.gravity)), "")
+        ("output.trajectory_interval_s", po::value(&c.trajectoryInterval)->default_value(c.trajectoryInterval, text(c.trajectoryInterval)), "trajectory sampling, s");
+    return d;
+}
+
+std::string overridesAsIni(const std::vector<std::string>& overrides) {
+    std::string ini;
+    for (const auto& o : overrides) {
+        const auto eq = o.find('=');
+        if (eq == std::string::npos || eq == 0)
+            throw InputError("--set '" + o + "': expected section.key=value");
+        const std::string key = o.substr(0, eq);
+        const auto dot = key.rfind('.');
+        if (dot == std::string::npos) ini += key + "=" + o.substr(eq + 1) + "\n";
+        else ini += "[" + key.substr(0, dot) + "]\n" + key.substr(dot + 1) + "=" + o.substr(eq + 1) + "\n";
+    }
+    return ini;
+}
+
+SceneConfig load(const std::string* path, const std::vector<std::string>& overrides) {
+    SceneConfig c;
+    std::string shape = "cube", orientation = "random";
+    double restitution = -1;
+    po::options_description d = sceneKeys(c, shape, orientation, restitution);
+    po::variables_map vm;
+    std::istringstream setIni(overridesAsIni(overrides));
+    try {
+        po::store(po::parse_config_file(setIni, d), vm);  // first stored wins: --set over the file
+    } catch (const po::error& e) {
+        throw InputError(std::string("--set: ") + e.what());
+    }
+    if (path) {
+        std::ifstream in(*path);
+        if (!in) throw InputError(*path, 0, "cannot open scene file");
+        try {
+            po::store(po::parse_config_file(in, d), vm);
+        } catch (const po::error& e) {
+            throw InputError(*path, 0, e.what());
+        }
+        c.sourceFile = *path;
+    }
+    po::notify(vm);
+    c.block.shape = parseBlockShape(shape);
+    if (orientation != "random" && orientation != "fixed")
+        throw InputError("release.orientation must be random or fixed, not '" + orientation + "'");
+    c.release.randomOrientation = orientation == "random";
+    if (!vm.count("release.y_min_m")) c.release.yMin = c.release.y;
+    if (!vm.count("release.y_max_m")) c.release.yMax = c.release.y;
+    if (c.release.yMax < c.release.yMin) throw InputError("release.y_max_m is below release.y_min_m");
+    if (restitution >= 0) {
+        if (!(restitution > 0 && restitution <= 1)) throw InputError("soil.restitution must be in (0, 1]");
+        c.soilContact.dampingRatio = dampingRatioFromRestitution(restitution);
+    }
+    if (c.block.shape == BlockShapeKind::Cube && vm.count("block.d1_m")) c.block.volumeM3 = c.block.d1 * c.block.d1 * c.block.d1;
+    if (!(c.integration.safety > 0 && c.integration.safety <= 1))
+        throw InputError("integration.safety must be in (0, 1]");
+    if (!(c.stop.maxTime > 0 && c.stop.restTime > 0)) throw InputError("stop times must be positive");
+    // Terrain paths are relative to the scene file.
+    if (path) {
+        const auto dir = std::filesystem::path(*path).parent_path();
+        for (std::string* p : {&c.terrain.profile, &c.terrain.dtm})
+            if (!p->empty() && std::filesystem::path(*p).is_relative()) *p = (dir / *p).lexically_normal().string();
+    }
+    return c;
+}
+
+}  // namespace
+
+SceneConfig loadScene(const std::string& path, const std::vector<std::string>& overrides) { return load(&path, overrides); }
+
+SceneConfig sceneFromOverrides(const std::vector<std::string>& overrides) { return load(nullptr, overrides); }
+
+std::string describeSceneKeys() {
+    SceneConfig c;
+    std::string shape = "cube", orientation = "random";
+    double restitution = -1;
+    std::ostringstream os;
+    os << sceneKeys(c, shape, orientation, restitution);
+    return os.str();
+}
+
+}  // namespace sylva::dem

@@ -1,0 +1,51 @@
+#include "libdem/SoilContact.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "libstand/InputError.hpp"
+
+namespace sylva::dem {
+
+double dampingRatioFromRestitution(double en) {
+    const double l = std::log(en);
+    return -l / std::sqrt(M_PI * M_PI + l * l);  // Eq. 15
+}
+
+double restitutionFromDampingRatio(double ratio) {
+    return std::exp(-M_PI * ratio / std::sqrt(1 - ratio * ratio));  // Eq. 15 inverted (ratio < 1)
+}
+
+SoilContact::SoilContact(const SoilContactParams& p, double blockMass)
+    : kn_(p.kn),
+      kt_(p.kappa * p.kn),                                          // Eq. 19
+      alpha_(p.dampingRatio * 2.0 * std::sqrt(p.kn * blockMass)),   // Eqs. 15-16
+      tanPhi_(std::tan(p.frictionDeg * M_PI / 180)),
+      dashpotPulls_(p.dashpotPulls) {
+    if (!(p.kn > 0)) throw InputError("soil.kn must be positive");
+    if (!(p.kappa > 0)) throw InputError("soil.kappa must be positive");
+    if (!(p.dampingRatio >= 0 && p.dampingRatio < 1))
+        throw InputError("soil.damping_ratio (alpha/alpha_cr) must be in [0, 1)");
+    if (!(p.frictionDeg >= 0 && p.frictionDeg < 90)) throw InputError("soil.friction_deg must be in [0, 90)");
+}
+
+Vec3 SoilContact::force(const ContactGeometry& g, ContactHistory& h, double dt, DissipationLedger& ledger) const {
+    const double overlapRate = -g.normal.dot(g.relativeVelocity);  // dU_n/dt > 0 while approaching
+    // Eq. 14 as written: the dashpot acts on loading and unloading alike, so near the end of a
+    // rebound it may pull; this is the law whose restitution is exactly Eq. 15's e_n. With
+    // dashpotPulls = false the normal force is floored at zero, as Yade's viscoelastic law does
+    // (docs/model.md compares the two readings).
+    const double damping = alpha_ * overlapRate;
+    const double fn = dashpotPulls_ ? kn_ * g.overlap + damping : std::max(0.0, kn_ * g.overlap + damping);
+    // Work of the dashpot over the last step: mean force (trapezoid) times the overlap increment.
+    ledger.contactDamping += 0.5 * (h.dampingForce + damping) * overlapRate * dt;
+    h.dampingForce = damping;
+    const Vec3 ft = updateShearForce(g, h, kt_, fn, tanPhi_, dt, ledger);  // Eqs. 17-19
+    return fn * g.normal + ft;
+}
+
+double SoilContact::storedEnergy(const ContactGeometry& g, const ContactHistory& h) const {
+    return 0.5 * kn_ * g.overlap * g.overlap + 0.5 * h.shearForce.squaredNorm() / kt_;
+}
+
+}  // namespace sylva::dem

@@ -79,6 +79,7 @@ CsvTable CsvTable::parse(const std::string& text, const std::string& sourceName)
                         throw InputError(sourceName, lineNo, "column '" + cells[i] + "' appears twice in the header");
             }
             t.header_ = std::move(cells);
+            t.headerLine_ = lineNo;
             haveHeader = true;
             continue;
         }
@@ -103,7 +104,7 @@ std::size_t CsvTable::require(const std::string& column) const {
     if (auto i = index(column)) return *i;
     std::string have;
     for (const auto& h : header_) have += (have.empty() ? "" : ",") + h;
-    throw InputError(source_, 1, "missing column '" + column + "' (header has: " + have + ")");
+    throw InputError(source_, headerLine_, "missing column '" + column + "' (header has: " + have + ")");
 }
 
 double CsvTable::number(std::size_t row, std::size_t col) const {

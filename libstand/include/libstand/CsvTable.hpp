@@ -38,6 +38,7 @@ private:
     std::vector<std::string> header_;
     std::vector<std::vector<std::string>> cells_;
     std::vector<long> lines_;
+    long headerLine_ = 1;
 };
 
 }  // namespace sylva

@@ -58,8 +58,8 @@ po::options_description sceneKeys(SceneConfig& c, std::string& shape, std::strin
         ("integration.dt_s", po::value(&i.forcedDt)->default_value(i.forcedDt, text(i.forcedDt)), "force this time step (0: automatic); refused if unstable")
         ("integration.anticipated_contacts", po::value(&i.anticipatedContacts)->default_value(i.anticipatedContacts, text(i.anticipatedContacts)), "new contacts the step must stay stable for")
         ("integration.energy_tolerance", po::value(&i.energyTolerance)->default_value(i.energyTolerance, text(i.energyTolerance)), "relative energy imbalance that stops a run")
-        ("stop.rest_speed_m_s", po::value(&st.restSpeed)->default_value(st.restSpeed, text(st.restSpeed)), "speed under which the block rests")
-        ("stop.rest_time_s", po::value(&st.restTime)->default_value(st.restTime, text(st.restTime)), "how long it must rest, s")
+        ("stop.rest_distance_m", po::value(&st.restDistance)->default_value(st.restDistance, text(st.restDistance)), "the block rests once its centre stays within this distance of one point ...")
+        ("stop.rest_time_s", po::value(&st.restTime)->default_value(st.restTime, text(st.restTime)), "... for this long, s")
         ("stop.max_time_s", po::value(&st.maxTime)->default_value(st.maxTime, text(st.maxTime)), "simulated time limit, s")
         ("gravity_m_s2", po::value(&c.gravity)->default_value(c.gravity, text(c.gravity)), "")
         ("output.trajectory_interval_s", po::value(&c.trajectoryInterval)->default_value(c.trajectoryInterval, text(c.trajectoryInterval)), "trajectory sampling, s");
@@ -117,7 +117,8 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
     if (c.block.shape == BlockShapeKind::Cube && vm.count("block.d1_m")) c.block.volumeM3 = c.block.d1 * c.block.d1 * c.block.d1;
     if (!(c.integration.safety > 0 && c.integration.safety <= 1))
         throw InputError("integration.safety must be in (0, 1]");
-    if (!(c.stop.maxTime > 0 && c.stop.restTime > 0)) throw InputError("stop times must be positive");
+    if (!(c.stop.maxTime > 0 && c.stop.restTime > 0 && c.stop.restDistance > 0))
+        throw InputError("stop.max_time_s, stop.rest_time_s and stop.rest_distance_m must be positive");
     // Terrain paths are relative to the scene file.
     if (path) {
         const auto dir = std::filesystem::path(*path).parent_path();

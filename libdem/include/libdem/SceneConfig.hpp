@@ -31,8 +31,8 @@ struct IntegrationConfig {
 };
 
 struct StopConfig {
-    double restSpeed = 0.05;    // m/s: below this (and spin x radius below it) the block is resting
-    double restTime = 1.0;      // s it must stay so
+    double restDistance = 0.05;  // m: the block rests once its centre stays this close to one point
+    double restTime = 1.0;       // s it must stay so
     double maxTime = 300;       // s of simulated time
 };
 

@@ -1,0 +1,60 @@
+#pragma once
+// The block's motion on the soil, one explicit step at a time:
+// detect contacts -> choose the stable time step -> contact forces -> integrate -> audit energy.
+#include <cstdint>
+#include <vector>
+
+#include "libdem/BlockRun.hpp"
+
+namespace sylva::dem {
+
+class BlockMotion {
+public:
+    // Throws InputError if the block starts inside the soil.
+    BlockMotion(const Scene& scene, const Release& start);
+
+    // Advances by one stable step (or the forced one) and returns it. Throws SimulationError on
+    // NaN, on a forced step above the stable limit, or when energy grows without a source.
+    double step();
+
+    double time() const { return t_; }
+    long steps() const { return steps_; }
+    RigidBody& block() { return block_; }  // e.g. to give the block an initial velocity
+    const RigidBody& block() const { return block_; }
+    bool touching() const { return !touches_.empty(); }
+    std::size_t contactCount() const { return touches_.size(); }
+    // Height of the block's lowest point above the macroscopic surface under its centre.
+    double clearance() const;
+    const EnergyBudget& energy() const { return budget_; }
+
+private:
+    // A block sphere touching a soil sphere, with the history its law carries between steps.
+    struct SoilTouch {
+        std::uint32_t blockSphere;
+        std::uint32_t soilSphere;
+        ContactHistory history;
+        ContactGeometry geometry;
+        bool touching;
+    };
+
+    void updateCentres();
+    void detectContacts();
+    SoilTouch& touch(std::uint32_t blockSphere, std::uint32_t soilSphere);
+    double timeStep() const;
+    void audit(const Vec3& force, const Vec3& torque, double dt, double stored);
+
+    const SceneConfig& cfg_;
+    const SoilBed& soil_;
+    RigidBody block_;
+    const ContactLaw& law_;
+    std::vector<Vec3> worldCentres_;
+    std::vector<std::uint32_t> candidates_;
+    std::vector<SoilTouch> touches_;
+    double anticipatedStiffness_ = 0;
+    DissipationLedger ledger_;
+    EnergyBudget budget_;
+    double t_ = 0;
+    long steps_ = 0;
+};
+
+}  // namespace sylva::dem

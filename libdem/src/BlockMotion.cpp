@@ -1,0 +1,160 @@
+#include "libdem/BlockMotion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "libdem/SimulationError.hpp"
+#include "libdem/StableStep.hpp"
+#include "libstand/InputError.hpp"
+
+namespace sylva::dem {
+
+namespace {
+std::string where(const Vec3& p) {
+    std::ostringstream os;
+    os.precision(4);
+    os << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
+    return os.str();
+}
+}  // namespace
+
+BlockMotion::BlockMotion(const Scene& scene, const Release& start)
+    : cfg_(scene.config()), soil_(scene.soil()), block_(scene.blockTemplate()),
+      law_(scene.laws().get(BodyKind::Block, BodyKind::Soil)) {
+    block_.position = start.position;
+    block_.orientation = start.orientation;
+    worldCentres_.resize(block_.spheres().size());
+    updateCentres();
+    detectContacts();
+    if (!touches_.empty())
+        throw InputError(cfg_.sourceFile, 0, "the block is released inside the soil at " + where(start.position) +
+                                                 ": raise release.fall_height_m");
+    anticipatedStiffness_ = cfg_.integration.anticipatedContacts * law_.normalStiffness(ContactGeometry{});
+    budget_.initialTotal = block_.kineticEnergy() + block_.mass() * cfg_.gravity * block_.position.z();
+}
+
+double BlockMotion::step() {
+    updateCentres();
+    detectContacts();
+    const double dt = timeStep();
+    Vec3 force(0, 0, -block_.mass() * cfg_.gravity), torque(0, 0, 0);
+    double stored = 0;
+    for (auto& c : touches_) {
+        const Vec3 f = law_.force(c.geometry, c.history, dt, ledger_);
+        force += f;
+        torque += (c.geometry.point - block_.position).cross(f);
+        stored += law_.storedEnergy(c.geometry, c.history);
+    }
+    audit(force, torque, dt, stored);
+    block_.advance(dt, force, torque);
+    t_ += dt;
+    ++steps_;
+    if (!block_.position.allFinite() || !block_.velocity.allFinite() || !block_.angularMomentum.allFinite())
+        throw SimulationError("the block's state became NaN at t = " + std::to_string(t_) + " s (time step " +
+                              std::to_string(dt) + " s)");
+    if (block_.position.z() < soil_.surfaceHeight(block_.position.x(), block_.position.y()) -
+                                  2 * (soil_.radius() + block_.boundingRadius()))
+        throw SimulationError("the block fell through the soil at " + where(block_.position) + ", t = " +
+                              std::to_string(t_) + " s: contacts too soft or time step too large");
+    return dt;
+}
+
+void BlockMotion::updateCentres() {
+    for (std::size_t i = 0; i < worldCentres_.size(); ++i) worldCentres_[i] = block_.sphereCentre(i);
+}
+
+// Pairs block sphere / soil sphere that overlap now; histories of pairs that stay in touch carry over.
+void BlockMotion::detectContacts() {
+    for (auto& c : touches_) c.touching = false;
+    candidates_.clear();
+    const double rs = soil_.radius();
+    soil_.near(block_.position, block_.boundingRadius() + rs, candidates_);
+    const Vec3 omega = block_.angularVelocity();
+    for (std::uint32_t s : candidates_) {
+        const Vec3 cs = soil_.center(s);
+        for (std::uint32_t i = 0; i < worldCentres_.size(); ++i) {
+            const double rb = block_.spheres()[i].radius;
+            const Vec3 d = worldCentres_[i] - cs;
+            const double dist2 = d.squaredNorm();
+            if (dist2 >= (rb + rs) * (rb + rs)) continue;
+            const double dist = std::sqrt(dist2);
+            ContactGeometry g;
+            g.normal = d / dist;
+            g.overlap = rb + rs - dist;
+            g.point = cs + g.normal * (rs - 0.5 * g.overlap);
+            g.relativeVelocity = block_.velocity + omega.cross(g.point - block_.position);
+            g.meanSpinNormal = 0.5 * omega.dot(g.normal);  // the soil does not spin
+            g.radiusA = rb;
+            g.radiusB = rs;
+            touch(i, s).geometry = g;
+        }
+    }
+    touches_.erase(std::remove_if(touches_.begin(), touches_.end(), [](const SoilTouch& c) { return !c.touching; }),
+                   touches_.end());
+}
+
+BlockMotion::SoilTouch& BlockMotion::touch(std::uint32_t blockSphere, std::uint32_t soilSphere) {
+    for (auto& c : touches_)
+        if (c.blockSphere == blockSphere && c.soilSphere == soilSphere) {
+            c.touching = true;
+            return c;
+        }
+    touches_.push_back(SoilTouch{blockSphere, soilSphere, ContactHistory{}, ContactGeometry{}, true});
+    return touches_.back();
+}
+
+// The stable step of the springs acting now, plus room for `anticipatedContacts` new ones.
+double BlockMotion::timeStep() const {
+    StableStep s;
+    const double c = law_.dampingCoefficient();
+    s.add(anticipatedStiffness_, c, block_.maxInverseMass());
+    for (const auto& tc : touches_)
+        s.add(law_.normalStiffness(tc.geometry), c, block_.inverseMassAlong(tc.geometry.point, tc.geometry.normal));
+    const double limit = s.critical();
+    const double forced = cfg_.integration.forcedDt;
+    if (forced > 0) {
+        if (forced > limit)
+            throw SimulationError("integration.dt_s = " + std::to_string(forced) + " s is above the stable limit " +
+                                  std::to_string(limit) + " s of the contacts active at t = " + std::to_string(t_) +
+                                  " s; use a smaller step or 0 (automatic)");
+        return forced;
+    }
+    return cfg_.integration.safety * limit;
+}
+
+// Audited at t, where positions and contact springs are: the leapfrog's velocities are half a step
+// off, so they are first synchronised with half of this step's forces. Energy appearing from
+// nowhere means the integration went wrong.
+void BlockMotion::audit(const Vec3& force, const Vec3& torque, double dt, double stored) {
+    const double m = block_.mass();
+    const Vec3 v = block_.velocity + 0.5 * dt * force / m;
+    const Vec3 w = (block_.orientation.conjugate() * (block_.angularMomentum + 0.5 * dt * torque))
+                       .cwiseQuotient(block_.principalInertia());
+    budget_.kinetic = 0.5 * m * v.squaredNorm() + 0.5 * w.dot(block_.principalInertia().cwiseProduct(w));
+    budget_.potential = m * cfg_.gravity * block_.position.z();
+    budget_.stored = stored;
+    budget_.contactDamping = ledger_.contactDamping;
+    budget_.friction = ledger_.friction;
+    const double total = budget_.kinetic + budget_.potential + stored + ledger_.contactDamping + ledger_.friction;
+    // Energy converted so far: what left the potential, and at least the release's kinetic energy
+    // plus the fall to the ground.
+    const double scale = std::max(budget_.initialTotal - budget_.potential,
+                                  budget_.initialTotal - m * cfg_.gravity * (block_.position.z() - cfg_.release.fallHeight));
+    const double rel = (total - budget_.initialTotal) / scale;
+    budget_.imbalance = std::max(budget_.imbalance, std::abs(rel));
+    if (rel > cfg_.integration.energyTolerance)
+        throw SimulationError("energy grew without a source at t = " + std::to_string(t_) + " s (+" +
+                              std::to_string(100 * rel) + " % of the energy converted): the time step is too large "
+                              "for these contact parameters; lower integration.safety or integration.dt_s");
+}
+
+double BlockMotion::clearance() const {
+    double lowest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < block_.spheres().size(); ++i)
+        lowest = std::min(lowest, block_.sphereCentre(i).z() - block_.spheres()[i].radius);
+    return std::max(0.0, lowest - soil_.surfaceHeight(block_.position.x(), block_.position.y()));
+}
+
+}  // namespace sylva::dem

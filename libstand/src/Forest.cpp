@@ -1,0 +1,82 @@
+#include "libstand/Forest.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <optional>
+#include <unordered_map>
+
+#include "libstand/Allometry.hpp"
+#include "libstand/CsvTable.hpp"
+#include "libstand/InputError.hpp"
+
+namespace sylva::stand {
+
+namespace {
+
+// A species name is written as is unless it would break the row (a comma or a quote).
+std::string csvField(const std::string& s) {
+    if (s.find_first_of(",\"") == std::string::npos) return s;
+    std::string quoted = "\"";
+    for (char c : s) quoted += (c == '"') ? std::string("\"\"") : std::string(1, c);
+    return quoted + "\"";
+}
+
+// Optional numeric column: the row's value if the file has the column, else nothing.
+std::optional<double> optionalNumber(const CsvTable& t, std::size_t row, std::optional<std::size_t> col) {
+    if (!col) return std::nullopt;
+    return t.number(row, *col);
+}
+
+}  // namespace
+
+void writeForestCsv(const std::string& path, const Forest& forest) {
+    std::ofstream out(path);
+    if (!out) throw InputError(path, 0, "cannot open file for writing");
+    // 10 significant digits: positions to 0.1 mm on a 100 km slope, diameters as given.
+    out.precision(10);
+    out << "stem,x,y,dbh_cm,species,stool,height_m,crown_length_m,crown_mass_kg\n";
+    for (const Tree& t : forest.trees) {
+        out << t.id << ',' << t.x << ',' << t.y << ',' << t.dbhCm << ',' << csvField(t.species) << ',';
+        if (t.stool) out << *t.stool;
+        out << ',' << t.heightM << ',' << t.crownLengthM << ',' << t.crownMassKg << '\n';
+    }
+    out.flush();
+    if (!out) throw InputError(path, 0, "write failed (disk full?)");
+}
+
+Forest readForestCsv(const std::string& path) {
+    const CsvTable t = CsvTable::read(path);
+    const std::size_t cx = t.require("x"), cy = t.require("y"), cd = t.require("dbh_cm");
+    const auto cStem = t.index("stem"), cSpecies = t.index("species"), cStool = t.index("stool");
+    const auto cHeight = t.index("height_m"), cCrownLength = t.index("crown_length_m"),
+               cCrownMass = t.index("crown_mass_kg");
+
+    Forest forest;
+    forest.trees.reserve(t.rows());
+    std::unordered_map<long, long> lineOfStem;
+    for (std::size_t r = 0; r < t.rows(); ++r) {
+        Tree tree;
+        tree.id = cStem ? t.integer(r, *cStem) : static_cast<long>(r + 1);
+        if (const auto [it, fresh] = lineOfStem.emplace(tree.id, t.lineOf(r)); !fresh)
+            t.fail(r, *cStem, "stem id " + std::to_string(tree.id) + " already used on line " + std::to_string(it->second));
+        tree.x = t.number(r, cx);
+        tree.y = t.number(r, cy);
+        tree.dbhCm = t.number(r, cd);
+        if (tree.dbhCm <= 0) t.fail(r, cd, "diameter must be positive, got " + t.text(r, cd));
+        if (cSpecies) tree.species = t.text(r, *cSpecies);
+        if (cStool && !t.text(r, *cStool).empty()) tree.stool = t.integer(r, *cStool);
+
+        // Computed allometry always passes the checks below, so only a value read from the file can fail.
+        tree.heightM = optionalNumber(t, r, cHeight).value_or(treeHeightM(tree.dbhCm));
+        if (tree.heightM <= 0) t.fail(r, *cHeight, "height must be positive, got " + t.text(r, *cHeight));
+        tree.crownLengthM = optionalNumber(t, r, cCrownLength).value_or(crownLengthM(tree.heightM));
+        if (tree.crownLengthM < 0 || tree.crownLengthM > tree.heightM)
+            t.fail(r, *cCrownLength, "crown length must lie in [0, height_m], got " + t.text(r, *cCrownLength));
+        tree.crownMassKg = optionalNumber(t, r, cCrownMass).value_or(crownMassKg(tree.dbhCm));
+        if (tree.crownMassKg < 0) t.fail(r, *cCrownMass, "crown mass must not be negative, got " + t.text(r, *cCrownMass));
+        forest.trees.push_back(std::move(tree));
+    }
+    return forest;
+}
+
+}  // namespace sylva::stand

@@ -1,0 +1,51 @@
+#include "libstand/StandCatalogue.hpp"
+
+#include <algorithm>
+#include <map>
+
+#include "libstand/InputError.hpp"
+
+namespace sylva::stand {
+
+StandCatalogue::StandCatalogue(const Inventory& inventory, const std::string& stemsSource) : name_(inventory.name) {
+    if (inventory.stems.empty()) throw InputError(stemsSource, 0, "the inventory has no stem: nothing to resample");
+
+    // std::map keeps the stools in id order, so the catalogue (and every forest drawn from it)
+    // does not depend on hash-table order.
+    std::map<std::string, std::vector<const Stem*>> stemsOfStool;
+    for (const Stem& s : inventory.stems) {
+        const StemTemplate t{s.dbhCm, s.species};
+        all_.push_back(t);
+        maxDbhCm_ = std::max(maxDbhCm_, s.dbhCm);
+        if (!s.stool) {
+            singles_.push_back(t);
+            continue;
+        }
+        auto& members = stemsOfStool[*s.stool];
+        if (!members.empty() && members.front()->plot != s.plot)
+            throw InputError(stemsSource, s.line,
+                             "stool '" + *s.stool + "' is in plot '" + s.plot + "' but its stem on line " +
+                                 std::to_string(members.front()->line) + " is in plot '" + members.front()->plot +
+                                 "' (a stool's stems must share one plot)");
+        members.push_back(&s);
+    }
+
+    for (const auto& [id, members] : stemsOfStool) {
+        Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
+        for (const Stem* s : members) centroid += Eigen::Vector2d(s->x, s->y);
+        centroid /= static_cast<double>(members.size());
+        StoolTemplate stool;
+        for (const Stem* s : members) {
+            stool.offsets.push_back(Eigen::Vector2d(s->x, s->y) - centroid);
+            stool.stems.push_back({s->dbhCm, s->species});
+        }
+        stools_.push_back(std::move(stool));
+    }
+
+    const double areaHa = inventory.areaHa();
+    stemsPerHa_ = static_cast<double>(all_.size()) / areaHa;
+    stoolsPerHa_ = static_cast<double>(stools_.size()) / areaHa;
+    stoolStemShare_ = static_cast<double>(all_.size() - singles_.size()) / static_cast<double>(all_.size());
+}
+
+}  // namespace sylva::stand

@@ -1,0 +1,54 @@
+#include "StemGrid.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sylva::stand {
+
+StemGrid::StemGrid(const Eigen::Vector2d& lower, const Eigen::Vector2d& upper, double maxRadiusM, double clearanceM)
+    : lower_(lower), cellSide_(2 * maxRadiusM + clearanceM), clearance_(clearanceM) {
+    nx_ = std::max(1L, static_cast<long>(std::ceil((upper.x() - lower.x()) / cellSide_)));
+    ny_ = std::max(1L, static_cast<long>(std::ceil((upper.y() - lower.y()) / cellSide_)));
+    head_.assign(static_cast<std::size_t>(nx_ * ny_), -1);
+}
+
+long StemGrid::column(double x) const {
+    return std::clamp(static_cast<long>(std::floor((x - lower_.x()) / cellSide_)), 0L, nx_ - 1);
+}
+
+long StemGrid::row(double y) const {
+    return std::clamp(static_cast<long>(std::floor((y - lower_.y()) / cellSide_)), 0L, ny_ - 1);
+}
+
+bool StemGrid::isFree(const Eigen::Vector2d& p, double radiusM) const {
+    const long cx = column(p.x()), cy = row(p.y());
+    for (long iy = std::max(0L, cy - 1); iy <= std::min(ny_ - 1, cy + 1); ++iy)
+        for (long ix = std::max(0L, cx - 1); ix <= std::min(nx_ - 1, cx + 1); ++ix)
+            for (long j = head_[cellIndex(ix, iy)]; j >= 0; j = next_[j]) {
+                const double minDistance = radiusM + radii_[j] + clearance_;
+                if ((points_[j] - p).squaredNorm() < minDistance * minDistance) return false;
+            }
+    return true;
+}
+
+void StemGrid::insert(const Eigen::Vector2d& p, double radiusM) {
+    const long cell = cellIndex(column(p.x()), row(p.y()));
+    next_.push_back(head_[cell]);
+    head_[cell] = static_cast<long>(points_.size());
+    cellOf_.push_back(cell);
+    points_.push_back(p);
+    radii_.push_back(radiusM);
+}
+
+void StemGrid::truncate(std::size_t count) {
+    // Stems are removed newest first, and each is the head of its cell's list at that moment.
+    while (points_.size() > count) {
+        head_[cellOf_.back()] = next_.back();
+        next_.pop_back();
+        cellOf_.pop_back();
+        points_.pop_back();
+        radii_.pop_back();
+    }
+}
+
+}  // namespace sylva::stand

@@ -1,0 +1,104 @@
+// Forest CSV files: what `generate` writes and `simulate --forest` reads, plus plain tree files.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+#include "libstand/Allometry.hpp"
+#include "libstand/Forest.hpp"
+#include "libstand/InputError.hpp"
+
+using namespace sylva::stand;
+
+namespace {
+
+std::string writeText(const std::string& name, const std::string& text) {
+    const std::string path = ::testing::TempDir() + name;
+    std::ofstream(path) << text;
+    return path;
+}
+
+// Reading `text` must fail with an InputError on `line` whose message contains `fragment`.
+void expectRejected(const std::string& name, const std::string& text, long line, const std::string& fragment) {
+    const std::string path = writeText(name, text);
+    try {
+        readForestCsv(path);
+        ADD_FAILURE() << name << ": accepted";
+    } catch (const sylva::InputError& e) {
+        EXPECT_EQ(e.line(), line) << e.what();
+        EXPECT_EQ(e.file(), path);
+        EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
+}
+
+}  // namespace
+
+TEST(ForestReader, ReadsBackWhatTheWriterWrote) {
+    Forest forest;
+    forest.trees.push_back({1, 10.125, 3.5, 12.3, "beech", 4, 9.1, 3.7, 12.5});
+    forest.trees.push_back({2, 499.999, 199.001, 45.7, "maple, sycamore \"acer\"", std::nullopt, 22.2, 9.0, 440.25});
+    const std::string path = ::testing::TempDir() + "roundtrip_forest.csv";
+    writeForestCsv(path, forest);
+
+    std::ifstream in(path);
+    std::string header;
+    std::getline(in, header);
+    EXPECT_EQ(header, "stem,x,y,dbh_cm,species,stool,height_m,crown_length_m,crown_mass_kg");
+
+    const Forest back = readForestCsv(path);
+    ASSERT_EQ(back.trees.size(), 2u);
+    for (std::size_t i = 0; i < 2; ++i) {
+        const Tree &a = forest.trees[i], &b = back.trees[i];
+        EXPECT_EQ(b.id, a.id);
+        // 10 significant digits are written: values of this size come back exactly.
+        EXPECT_DOUBLE_EQ(b.x, a.x);
+        EXPECT_DOUBLE_EQ(b.y, a.y);
+        EXPECT_DOUBLE_EQ(b.dbhCm, a.dbhCm);
+        EXPECT_EQ(b.species, a.species);
+        EXPECT_EQ(b.stool, a.stool);
+        // Given allometry is kept, not recomputed (these values differ from Eqs. 11-13 on purpose).
+        EXPECT_DOUBLE_EQ(b.heightM, a.heightM);
+        EXPECT_DOUBLE_EQ(b.crownLengthM, a.crownLengthM);
+        EXPECT_DOUBLE_EQ(b.crownMassKg, a.crownMassKg);
+    }
+}
+
+TEST(ForestReader, PlainTreeFileGetsIdsAndAllometry) {
+    const Forest f = readForestCsv(writeText("plain_trees.csv", "x,y,dbh_cm,stool\n1,2,20,\n3.5,4,30,7\n5,6,30,7\n"));
+    ASSERT_EQ(f.trees.size(), 3u);
+    EXPECT_EQ(f.trees[0].id, 1);
+    EXPECT_EQ(f.trees[2].id, 3);
+    EXPECT_FALSE(f.trees[0].stool.has_value());
+    EXPECT_EQ(f.trees[1].stool, 7);
+    EXPECT_TRUE(f.trees[0].species.empty());
+    // Eq. 11 at 0.20 m by hand: 1.3 + 14.761 - 2.18936; Eq. 12 and 13 via the tested functions.
+    EXPECT_NEAR(f.trees[0].heightM, 13.87164, 1e-9);
+    EXPECT_DOUBLE_EQ(f.trees[0].crownLengthM, crownLengthM(f.trees[0].heightM));
+    EXPECT_DOUBLE_EQ(f.trees[1].crownMassKg, crownMassKg(30));
+}
+
+TEST(ForestReader, GivenHeightSetsTheCrownLength) {
+    const Forest f = readForestCsv(writeText("height_only.csv", "x,y,dbh_cm,height_m\n0,0,20,10\n"));
+    EXPECT_NEAR(f.trees[0].crownLengthM, 4.0642, 1e-12);  // Eq. 12: 0.40642 * 10 m
+}
+
+TEST(ForestReader, RejectsBadRowsWithTheirLine) {
+    expectRejected("bad_x.csv", "x,y,dbh_cm\n1,2,20\n1,abc,20\n", 3, "column 'y'");
+    expectRejected("neg_dbh.csv", "x,y,dbh_cm\n1,2,20\n\n1,2,-3\n", 4, "diameter must be positive");
+    expectRejected("zero_dbh.csv", "x,y,dbh_cm\n1,2,0\n", 2, "diameter must be positive");
+    expectRejected("dup_stem.csv", "stem,x,y,dbh_cm\n5,1,2,20\n5,3,4,20\n", 3, "already used on line 2");
+    expectRejected("bad_stool.csv", "x,y,dbh_cm,stool\n1,2,20,A7\n", 2, "column 'stool'");
+    expectRejected("fields.csv", "x,y,dbh_cm\n1,2,20\n1,2\n", 3, "expected 3 fields");
+    expectRejected("crown.csv", "x,y,dbh_cm,height_m,crown_length_m\n1,2,20,10,11\n", 2, "crown length");
+    expectRejected("height.csv", "x,y,dbh_cm,height_m\n1,2,20,-1\n", 2, "height must be positive");
+    expectRejected("mass.csv", "x,y,dbh_cm,crown_mass_kg\n1,2,20,-5\n", 2, "crown mass");
+    expectRejected("nan.csv", "x,y,dbh_cm\n1,nan,20\n", 2, "not a finite number");
+}
+
+TEST(ForestReader, RejectsAFileWithoutDiameters) {
+    expectRejected("no_dbh.csv", "x,y\n1,2\n", 1, "missing column 'dbh_cm'");
+}
+
+TEST(ForestReader, RejectsAMissingFile) {
+    EXPECT_THROW(readForestCsv(::testing::TempDir() + "no_such_forest.csv"), sylva::InputError);
+}

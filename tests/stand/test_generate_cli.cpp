@@ -1,0 +1,94 @@
+// `sylvarock generate` end to end: the interface the outside checks call, file naming of realisations,
+// and the exit status and message of bad options.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "libstand/Forest.hpp"
+
+using namespace sylva::stand;
+
+namespace {
+
+struct CliRun {
+    int status;
+    std::string output;  // stdout and stderr
+};
+
+CliRun generate(const std::string& arguments) {
+    const std::string stand = std::string(SYLVAROCK_DATA) + "/stands/PY2";
+    const std::string command = std::string(SYLVAROCK_CLI) + " generate --stems " + stand + "_stems.csv --plots " + stand +
+                                "_plots.csv " + arguments + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    CliRun run{-1, {}};
+    char buffer[4096];
+    while (std::fgets(buffer, sizeof buffer, pipe)) run.output += buffer;
+    const int raw = pclose(pipe);
+    run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    return run;
+}
+
+std::string slurp(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+bool exists(const std::string& path) { return std::ifstream(path).good(); }
+
+}  // namespace
+
+TEST(GenerateCli, WritesTheForestTheChecksRead) {
+    const std::string out = ::testing::TempDir() + "cli_PY2_A.csv";
+    const CliRun r = generate("--structure aggregated --extent 0,0,100,50 --seed 7 --out " + out);
+    ASSERT_EQ(r.status, 0) << r.output;
+    const Forest f = readForestCsv(out);
+    ASSERT_EQ(f.trees.size(), 486u);  // 972 stems/ha (1944 stems in 2 ha) x 0.5 ha
+    std::set<long> stools;
+    for (std::size_t i = 0; i < f.trees.size(); ++i) {
+        EXPECT_EQ(f.trees[i].id, static_cast<long>(i) + 1);
+        EXPECT_TRUE(f.trees[i].x >= 0 && f.trees[i].x <= 100 && f.trees[i].y >= 0 && f.trees[i].y <= 50);
+        if (f.trees[i].stool) stools.insert(*f.trees[i].stool);
+    }
+    EXPECT_FALSE(stools.empty());
+    EXPECT_EQ(*stools.begin(), 1);
+    EXPECT_EQ(*stools.rbegin(), static_cast<long>(stools.size()));
+    EXPECT_EQ(slurp(out).substr(0, 68), "stem,x,y,dbh_cm,species,stool,height_m,crown_length_m,crown_mass_kg\n");
+}
+
+TEST(GenerateCli, RealisationsAreNumberedAndUseConsecutiveSeeds) {
+    const std::string dir = ::testing::TempDir();
+    ASSERT_EQ(generate("--structure random --extent 0,0,60,40 --seed 5 --realisations 2 --out " + dir + "cli_F.csv").status, 0);
+    ASSERT_TRUE(exists(dir + "cli_F_001.csv"));
+    ASSERT_TRUE(exists(dir + "cli_F_002.csv"));
+    EXPECT_FALSE(exists(dir + "cli_F_003.csv"));
+    ASSERT_EQ(generate("--structure random --extent 0,0,60,40 --seed 6 --out " + dir + "cli_G_{k}.csv").status, 0);
+    ASSERT_TRUE(exists(dir + "cli_G_001.csv"));
+    EXPECT_EQ(slurp(dir + "cli_F_002.csv"), slurp(dir + "cli_G_001.csv"));  // realisation k uses seed + k - 1
+    EXPECT_NE(slurp(dir + "cli_F_001.csv"), slurp(dir + "cli_F_002.csv"));
+}
+
+TEST(GenerateCli, BadOptionsExitWithStatusTwoAndSayWhy) {
+    const std::string out = " --out " + ::testing::TempDir() + "cli_bad.csv";
+    CliRun r = generate("--structure clustered --extent 0,0,100,50" + out);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("unknown forest structure 'clustered'"), std::string::npos) << r.output;
+    r = generate("--structure random --extent 0,0,0,50" + out);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("degenerate extent"), std::string::npos) << r.output;
+    r = generate("--structure random --extent 0,0,100" + out);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("expected 4"), std::string::npos) << r.output;
+    r = generate("--structure random --extent 0,0,100,50 --realisations 0" + out);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("--realisations"), std::string::npos) << r.output;
+    r = generate("--structure random --extent 0,0,100,50 --seed -3" + out);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("--seed"), std::string::npos) << r.output;
+}

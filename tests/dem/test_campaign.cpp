@@ -1,0 +1,91 @@
+// Campaigns: same seed, same results whatever the thread count; the CLI's files; and the stand-in
+// slope reproducing the paper's Sect. 3.2 without forest.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "DemTestScenes.hpp"
+#include "libdem/Campaign.hpp"
+#include "libdem/CampaignSummary.hpp"
+
+using namespace sylva::dem;
+
+TEST(Campaign, ResultsDoNotDependOnTheNumberOfThreads) {
+    const Scene scene(sylva::dem::testing::straightSlopeScene(30, 120, 40, {"release.x_m=10", "release.y_m=20", "stop.max_time_s=6"}));
+    CampaignOptions o;
+    o.runs = 6;
+    o.seed = 42;
+    o.threads = 1;
+    const auto one = runCampaign(scene, o);
+    o.threads = 3;
+    const auto three = runCampaign(scene, o);
+    ASSERT_EQ(one.size(), three.size());
+    for (std::size_t i = 0; i < one.size(); ++i) {
+        EXPECT_EQ(one[i].seed, three[i].seed);
+        EXPECT_EQ(one[i].stop, three[i].stop);  // bit for bit
+        EXPECT_EQ(one[i].steps, three[i].steps);
+    }
+    EXPECT_NE(one[0].stop, one[1].stop);  // runs do differ (random orientation)
+}
+
+TEST(Campaign, QuantilesFollowGslsDefinition) {
+    EXPECT_DOUBLE_EQ(quantile({3, 1, 2}, 0.5), 2.0);
+    EXPECT_DOUBLE_EQ(quantile({4, 1, 2, 3}, 0.5), 2.5);
+    EXPECT_DOUBLE_EQ(quantile({0, 10}, 0.25), 2.5);
+}
+
+namespace {
+std::string slurp(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+int cli(const std::string& args) { return std::system((std::string(SYLVAROCK_CLI) + " " + args + " >/dev/null 2>&1").c_str()); }
+}  // namespace
+
+TEST(SimulateCli, WritesRunsSummaryAndTrajectories) {
+    const auto out = std::filesystem::temp_directory_path() / "sylvarock-tests" / "simulate-cli";
+    std::filesystem::remove_all(out);
+    ASSERT_EQ(cli(std::string("simulate --scene ") + SYLVAROCK_DATA + "/scenes/no-forest.ini --runs 3 --seed 2 --threads 2 "
+                  "--trajectory --no-figures --out " + out.string()), 0);
+    const std::string runs = slurp((out / "runs.csv").string());
+    for (const char* col : {"run", "stop_x", "stop_y", "stop_z", "runout_m", "runout_horizontal_m", "stop_reason",
+                            "max_speed_m_s", "max_bounce_m", "duration_s", "cpu_s"})
+        EXPECT_NE(runs.substr(0, runs.find('\n')).find(col), std::string::npos) << col;
+    EXPECT_EQ(std::count(runs.begin(), runs.end(), '\n'), 4);
+    const std::string summary = slurp((out / "summary.json").string());
+    for (const char* key : {"\"dist50_m\"", "\"energy_line_deg\"", "\"runs\"", "\"wall_s\""})
+        EXPECT_NE(summary.find(key), std::string::npos) << key;
+    EXPECT_TRUE(std::filesystem::exists(out / "trajectories" / "run_0002.vtk"));
+}
+
+TEST(SimulateCli, BadSceneKeyIsRefusedWithItsName) {
+    EXPECT_NE(cli(std::string("simulate --scene ") + SYLVAROCK_DATA + "/scenes/no-forest.ini --set soil.frction_deg=3 --out /tmp/x"), 0);
+    EXPECT_NE(cli("simulate --scene /nonexistent.ini --out /tmp/x"), 0);
+}
+
+// Validation (short form; SYLVAROCK_LONG_VALIDATION=1 runs 300 blocks): without forest, the stand-in
+// slope and Table 2 give the paper's Sect. 3.2: most blocks stop between 325 and 375 m along the
+// slope, energy lines between 25 and 32 deg, bounces mostly under 1 m, speeds of 10-15 m/s.
+TEST(ValidationNoForest, StandInSlopeReproducesSection32) {
+    const bool longForm = std::getenv("SYLVAROCK_LONG_VALIDATION") != nullptr;
+    const Scene scene(loadScene(std::string(SYLVAROCK_DATA) + "/scenes/no-forest.ini"));
+    CampaignOptions o;
+    o.runs = longForm ? 300 : 60;
+    o.seed = 11;
+    const auto s = summarise(runCampaign(scene, o));
+    EXPECT_GE(s.dist50, 325);
+    EXPECT_LE(s.dist50, 375);
+    EXPECT_GE(s.energyLine50, 25);
+    EXPECT_LE(s.energyLine50, 32);
+    EXPECT_GE(s.shareBounceBelow1m, 0.5);  // "mostly <= 1 m"
+    EXPECT_GE(s.maxSpeed50, 10);           // top speeds of 10-15 m/s
+    EXPECT_LE(s.maxSpeed50, 16);
+    EXPECT_EQ(s.stopReasons.count("rest") ? s.stopReasons.at("rest") : 0, o.runs);
+    std::printf("Dist50 %.1f m, energy line %.1f deg, max speed median %.1f m/s, bounce <= 1 m %.0f %%\n", s.dist50,
+                s.energyLine50, s.maxSpeed50, 100 * s.shareBounceBelow1m);
+}

@@ -1,0 +1,47 @@
+#pragma once
+// A stand's inventory: plots (each with its own window and frame) and the stems measured in them.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "libstand/Window.hpp"
+
+namespace sylva::stand {
+
+struct Stem {
+    std::string plot;
+    std::string id;
+    double x = 0, y = 0;   // m, in the plot's frame
+    double dbhCm = 0;      // diameter at breast height (1.3 m)
+    std::string species;   // may be empty
+    std::optional<std::string> stool;  // coppice stool id; empty for a single tree
+    long line = 0;         // line in the stems file, for messages
+};
+
+struct Plot {
+    std::string id;
+    Window window;
+};
+
+struct Inventory {
+    std::string name;               // e.g. "GR1", from the file name
+    std::vector<Plot> plots;
+    std::vector<Stem> stems;
+    std::vector<std::string> warnings;  // valid but noteworthy data (stems at identical positions, empty plots)
+    bool hasDiameters = true;           // false for a point pattern without dbh_cm (then every dbhCm is NaN)
+
+    double areaHa() const;
+};
+
+// Reads `plot,stem,x,y,dbh_cm,species,stool` stems and a plots file with either
+// `plot,xmin,ymin,xmax,ymax` or `plot,wkt` (a WKT POLYGON per plot). Throws InputError naming the
+// file, the line and the problem for: a missing column, a non-numeric or negative diameter, a
+// stem outside its plot, duplicate stem ids, a stem whose plot has no window, a degenerate window.
+Inventory readInventory(const std::string& stemsCsv, const std::string& plotsCsv);
+
+// Valid but noteworthy data, one message each: stems at identical positions (their nearest-neighbour
+// distance is 0, as in spatstat) and plots without any stem. readInventory fills Inventory::warnings with it.
+std::vector<std::string> dataWarnings(const Inventory& inv, const std::string& stemsSource,
+                                      const std::string& plotsSource);
+
+}  // namespace sylva::stand

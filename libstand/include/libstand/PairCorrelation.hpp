@@ -1,0 +1,40 @@
+#pragma once
+// The pair correlation function g(r) of a stationary point pattern, estimated as spatstat's
+//   pcf(X, r = seq(0, rmax, length.out = nr), correction = c("translate", "Ripley"), divisor = "r"):
+//   g(r) = |W| / (2 pi r n (n-1)) * sum_{i != j} w_ij K_h(r - d_ij),
+// with the Epanechnikov kernel of half-width h = stoyan / sqrt(lambda) (Stoyan & Stoyan 1994) and the
+// translation (w = |W| / |W ∩ (W + x_j - x_i)|) or Ripley isotropic edge correction.
+// g = 1 for a Poisson pattern; g > 1 at distances where pairs are more frequent (aggregation).
+#include <Eigen/Core>
+#include <vector>
+
+#include "libstand/KernelSmoothing.hpp"
+#include "libstand/Window.hpp"
+
+namespace sylva::stand {
+
+struct PairCorrelationOptions {
+    double stoyan = 0.15;                        // bandwidth coefficient c in h = c / sqrt(lambda)
+    KernelSum kernelSum = KernelSum::AsRDensity;  // as spatstat (through R's density), or exact
+};
+
+struct PairCorrelation {
+    std::vector<double> r;      // 0, rmax/(nr-1), ..., rmax
+    std::vector<double> trans;  // translation-corrected estimate (+inf at r = 0 as in spatstat)
+    std::vector<double> iso;    // Ripley isotropic estimate
+    double bandwidth = 0;       // kernel half-width h, m
+};
+
+// Throws InputError if rmax <= 0 or nr < 2. With fewer than 2 points every value is NaN.
+PairCorrelation pairCorrelation(const std::vector<Eigen::Vector2d>& points, const Window& window, double rmax,
+                                std::size_t nr, const PairCorrelationOptions& options = {});
+
+// spatstat's default range for K and g (rmax.rule("K")): a quarter of the window frame's shorter side,
+// at most the distance within which a Poisson pattern has 1000 neighbours per point.
+double defaultPairCorrelationRmax(const Window& window, std::size_t nPoints);
+
+// Pools estimates on the same r grid (e.g. the plots of a stand) as a weighted mean; estimates with
+// weight 0 (plots with fewer than 2 stems) are left out. Throws InputError if the r grids differ.
+PairCorrelation poolPairCorrelations(const std::vector<PairCorrelation>& estimates, const std::vector<double>& weights);
+
+}  // namespace sylva::stand

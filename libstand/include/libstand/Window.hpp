@@ -1,0 +1,42 @@
+#pragma once
+// The observation window of a point pattern: an inventory plot or the extent of a virtual forest.
+// Either an axis-aligned rectangle or a simple polygon (x, y in metres).
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+namespace sylva::stand {
+
+class Window {
+public:
+    // Throws InputError if xmax <= xmin or ymax <= ymin (a degenerate window).
+    static Window rectangle(double xmin, double ymin, double xmax, double ymax);
+    // A simple polygon (outer ring; orientation is normalised to counter-clockwise; a closing
+    // vertex equal to the first is dropped). Throws InputError if it has fewer than 3 distinct
+    // vertices, zero area or intersects itself.
+    static Window polygon(std::vector<Eigen::Vector2d> vertices);
+    // "POLYGON((x y, x y, ...))" (one ring; holes are rejected with a clear message).
+    static Window fromWkt(const std::string& wkt);
+
+    bool isRectangle() const { return rectangle_; }
+    double area() const { return area_; }
+    double perimeter() const { return perimeter_; }
+    Eigen::Vector2d lower() const { return lo_; }  // bounding box
+    Eigen::Vector2d upper() const { return hi_; }
+    const std::vector<Eigen::Vector2d>& vertices() const { return vertices_; }
+
+    // Closed window: points on the boundary are inside.
+    bool contains(const Eigen::Vector2d& p) const;
+    // Distance from p (inside) to the nearest point of the boundary.
+    double distanceToBoundary(const Eigen::Vector2d& p) const;
+    std::string describe() const;  // "rectangle [0,50]x[0,50]" or "polygon of 7 vertices"
+
+private:
+    Window() = default;
+    bool rectangle_ = false;
+    double area_ = 0, perimeter_ = 0;
+    Eigen::Vector2d lo_{0, 0}, hi_{0, 0};
+    std::vector<Eigen::Vector2d> vertices_;
+};
+
+}  // namespace sylva::stand

@@ -1,0 +1,144 @@
+#include "libstand/Inventory.hpp"
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <sstream>
+#include <tuple>
+
+#include "libstand/CsvTable.hpp"
+#include "libstand/InputError.hpp"
+
+namespace sylva::stand {
+namespace {
+
+// "data/stands/GR1_stems.csv" -> "GR1": the stand is named after its stems file.
+std::string standName(const std::string& stemsCsv) {
+    std::string base = stemsCsv.substr(stemsCsv.find_last_of("/\\") + 1);
+    if (const auto dot = base.rfind('.'); dot != std::string::npos && dot > 0) base.erase(dot);
+    for (const std::string suffix : {"_stems", "-stems", "_trees"})
+        if (base.size() > suffix.size() && base.compare(base.size() - suffix.size(), suffix.size(), suffix) == 0)
+            return base.substr(0, base.size() - suffix.size());
+    return base;
+}
+
+std::vector<Plot> readPlots(const std::string& path) {
+    const CsvTable t = CsvTable::read(path);
+    const std::size_t cPlot = t.require("plot");
+    std::optional<std::size_t> cWkt;
+    for (const char* name : {"wkt", "window", "geometry"})
+        if (!cWkt) cWkt = t.index(name);
+    if (!cWkt && !t.has("xmin") && !t.has("ymin") && !t.has("xmax") && !t.has("ymax")) {
+        std::string have;
+        for (const auto& h : t.header()) have += (have.empty() ? "" : ",") + h;
+        throw InputError(path, 1,
+                         "a plots file needs either columns xmin,ymin,xmax,ymax or a WKT column named wkt (or window, "
+                         "geometry); header has: " + have);
+    }
+    std::array<std::size_t, 4> cBox{};
+    if (!cWkt) cBox = {t.require("xmin"), t.require("ymin"), t.require("xmax"), t.require("ymax")};
+
+    std::vector<Plot> plots;
+    std::map<std::string, long> lineOfPlot;
+    for (std::size_t r = 0; r < t.rows(); ++r) {
+        const std::string id = t.text(r, cPlot);
+        if (id.empty()) t.fail(r, cPlot, "empty plot id");
+        if (const auto it = lineOfPlot.find(id); it != lineOfPlot.end())
+            t.fail(r, cPlot, "duplicate plot id '" + id + "' (first defined on line " + std::to_string(it->second) + ")");
+        lineOfPlot[id] = t.lineOf(r);
+        try {
+            if (cWkt) {
+                plots.push_back({id, Window::fromWkt(t.text(r, *cWkt))});
+            } else {
+                const double x0 = t.number(r, cBox[0]), y0 = t.number(r, cBox[1]);
+                const double x1 = t.number(r, cBox[2]), y1 = t.number(r, cBox[3]);
+                plots.push_back({id, Window::rectangle(x0, y0, x1, y1)});
+            }
+        } catch (const InputError& e) {
+            if (e.line() > 0) throw;  // already names file and line (a bad number)
+            t.fail(r, "plot '" + id + "': " + e.what());
+        }
+    }
+    if (plots.empty()) throw InputError(path, 0, "no plots in the file");
+    return plots;
+}
+
+std::string coordinates(const Stem& s) {
+    std::ostringstream os;
+    os << "(" << s.x << ", " << s.y << ")";
+    return os.str();
+}
+
+}  // namespace
+
+double Inventory::areaHa() const {
+    double a = 0;
+    for (const auto& p : plots) a += p.window.area();
+    return a / 1e4;
+}
+
+std::vector<std::string> dataWarnings(const Inventory& inv, const std::string& stemsSource,
+                                      const std::string& plotsSource) {
+    std::vector<std::string> warnings;
+    std::map<std::string, std::vector<const Stem*>> byPlot;
+    for (const auto& s : inv.stems) byPlot[s.plot].push_back(&s);
+    for (const auto& p : inv.plots) {
+        auto& stems = byPlot[p.id];
+        if (stems.empty()) {
+            warnings.push_back(plotsSource + ": plot '" + p.id + "' has no stem (it counts in the area, lowering N and G)");
+            continue;
+        }
+        std::sort(stems.begin(), stems.end(),
+                  [](const Stem* a, const Stem* b) { return std::tie(a->x, a->y, a->line) < std::tie(b->x, b->y, b->line); });
+        for (std::size_t i = 1; i < stems.size(); ++i)
+            if (stems[i]->x == stems[i - 1]->x && stems[i]->y == stems[i - 1]->y)
+                warnings.push_back(stemsSource + ":" + std::to_string(stems[i]->line) + ": stem '" + stems[i]->id +
+                                   "' is at the same position " + coordinates(*stems[i]) + " as stem '" +
+                                   stems[i - 1]->id + "' (line " + std::to_string(stems[i - 1]->line) +
+                                   "); kept, its nearest-neighbour distance is 0");
+    }
+    return warnings;
+}
+
+Inventory readInventory(const std::string& stemsCsv, const std::string& plotsCsv) {
+    Inventory inv;
+    inv.name = standName(stemsCsv);
+    inv.plots = readPlots(plotsCsv);
+    std::map<std::string, const Plot*> plotById;
+    for (const auto& p : inv.plots) plotById[p.id] = &p;
+
+    const CsvTable t = CsvTable::read(stemsCsv);
+    const std::size_t cPlot = t.require("plot"), cStem = t.require("stem"), cX = t.require("x"), cY = t.require("y"),
+                      cDbh = t.require("dbh_cm");
+    const auto cSpecies = t.index("species");
+    const auto cStool = t.index("stool");
+    std::map<std::string, long> lineOfStem;
+    for (std::size_t r = 0; r < t.rows(); ++r) {
+        Stem s;
+        s.line = t.lineOf(r);
+        s.plot = t.text(r, cPlot);
+        s.id = t.text(r, cStem);
+        if (s.id.empty()) t.fail(r, cStem, "empty stem id");
+        if (const auto it = lineOfStem.find(s.id); it != lineOfStem.end())
+            t.fail(r, cStem, "duplicate stem id '" + s.id + "' (also on line " + std::to_string(it->second) + ")");
+        lineOfStem[s.id] = s.line;
+        s.x = t.number(r, cX);
+        s.y = t.number(r, cY);
+        s.dbhCm = t.number(r, cDbh);
+        if (s.dbhCm <= 0) t.fail(r, cDbh, "diameter " + t.text(r, cDbh) + " cm is not positive");
+        if (cSpecies) s.species = t.text(r, *cSpecies);
+        if (cStool && !t.text(r, *cStool).empty()) s.stool = t.text(r, *cStool);
+        const auto plot = plotById.find(s.plot);
+        if (plot == plotById.end())
+            t.fail(r, cPlot, "plot '" + s.plot + "' has no window in " + plotsCsv);
+        if (!plot->second->window.contains({s.x, s.y}))
+            t.fail(r, "stem '" + s.id + "' at " + coordinates(s) + " lies outside its plot '" + s.plot + "' (" +
+                          plot->second->window.describe() + ")");
+        inv.stems.push_back(std::move(s));
+    }
+
+    inv.warnings = dataWarnings(inv, stemsCsv, plotsCsv);
+    return inv;
+}
+
+}  // namespace sylva::stand

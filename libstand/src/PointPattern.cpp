@@ -1,0 +1,54 @@
+#include "libstand/PointPattern.hpp"
+
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "libstand/CsvTable.hpp"
+#include "libstand/InputError.hpp"
+
+namespace sylva::stand {
+
+Inventory readPointPattern(const std::string& csv, const Window& window) {
+    const CsvTable t = CsvTable::read(csv);
+    const std::size_t cX = t.require("x"), cY = t.require("y");
+    const auto cDbh = t.index("dbh_cm");
+    const auto cStool = t.index("stool");
+    const auto cStem = t.index("stem");
+
+    Inventory inv;
+    inv.name = csv.substr(csv.find_last_of("/\\") + 1);
+    inv.plots.push_back({"1", window});
+    inv.hasDiameters = cDbh.has_value();
+    std::map<std::string, long> lineOfStem;
+    for (std::size_t r = 0; r < t.rows(); ++r) {
+        Stem s;
+        s.plot = "1";
+        s.line = t.lineOf(r);
+        s.id = cStem ? t.text(r, *cStem) : std::to_string(r + 1);
+        if (cStem) {
+            if (s.id.empty()) t.fail(r, *cStem, "empty stem id");
+            if (const auto it = lineOfStem.find(s.id); it != lineOfStem.end())
+                t.fail(r, *cStem, "duplicate stem id '" + s.id + "' (also on line " + std::to_string(it->second) + ")");
+            lineOfStem[s.id] = s.line;
+        }
+        s.x = t.number(r, cX);
+        s.y = t.number(r, cY);
+        s.dbhCm = NAN;
+        if (cDbh) {
+            s.dbhCm = t.number(r, *cDbh);
+            if (s.dbhCm <= 0) t.fail(r, *cDbh, "diameter " + t.text(r, *cDbh) + " cm is not positive");
+        }
+        if (cStool && !t.text(r, *cStool).empty()) s.stool = t.text(r, *cStool);
+        if (!window.contains({s.x, s.y})) {
+            std::ostringstream os;
+            os << "point (" << s.x << ", " << s.y << ") lies outside the window (" << window.describe() << ")";
+            t.fail(r, os.str());
+        }
+        inv.stems.push_back(std::move(s));
+    }
+    inv.warnings = dataWarnings(inv, csv, "window");
+    return inv;
+}
+
+}  // namespace sylva::stand

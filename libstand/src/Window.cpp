@@ -1,0 +1,194 @@
+#include "libstand/Window.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+#include "libstand/InputError.hpp"
+
+namespace sylva::stand {
+namespace {
+
+using Vec = Eigen::Vector2d;
+
+double cross(const Vec& a, const Vec& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+double signedArea(const std::vector<Vec>& v) {
+    double twice = 0;
+    for (std::size_t i = 0; i < v.size(); ++i) twice += cross(v[i], v[(i + 1) % v.size()]);
+    return 0.5 * twice;
+}
+
+double segmentDistance(const Vec& p, const Vec& a, const Vec& b) {
+    const Vec ab = b - a;
+    const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+    return (a + t * ab - p).norm();
+}
+
+// Orientation sign of (a, b, c) with a tolerance relative to the coordinates' size, so that
+// collinear vertices read from a file with rounded decimals count as collinear.
+int orientation(const Vec& a, const Vec& b, const Vec& c, double tol) {
+    const double o = cross(b - a, c - a);
+    return o > tol ? 1 : (o < -tol ? -1 : 0);
+}
+
+bool onSegment(const Vec& p, const Vec& a, const Vec& b) {
+    return std::min(a.x(), b.x()) <= p.x() && p.x() <= std::max(a.x(), b.x()) && std::min(a.y(), b.y()) <= p.y() &&
+           p.y() <= std::max(a.y(), b.y());
+}
+
+bool segmentsIntersect(const Vec& a, const Vec& b, const Vec& c, const Vec& d, double tol) {
+    const int o1 = orientation(a, b, c, tol), o2 = orientation(a, b, d, tol);
+    const int o3 = orientation(c, d, a, tol), o4 = orientation(c, d, b, tol);
+    if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+    return (o1 == 0 && onSegment(c, a, b)) || (o2 == 0 && onSegment(d, a, b)) || (o3 == 0 && onSegment(a, c, d)) ||
+           (o4 == 0 && onSegment(b, c, d));
+}
+
+std::string fmt(double v) {
+    std::ostringstream os;
+    os << v;
+    return os.str();
+}
+
+}  // namespace
+
+Window Window::rectangle(double xmin, double ymin, double xmax, double ymax) {
+    if (!(xmax > xmin) || !(ymax > ymin))
+        throw InputError("degenerate window: xmin,ymin,xmax,ymax = " + fmt(xmin) + "," + fmt(ymin) + "," + fmt(xmax) +
+                         "," + fmt(ymax) + " (need xmax > xmin and ymax > ymin)");
+    Window w;
+    w.rectangle_ = true;
+    w.lo_ = {xmin, ymin};
+    w.hi_ = {xmax, ymax};
+    w.vertices_ = {{xmin, ymin}, {xmax, ymin}, {xmax, ymax}, {xmin, ymax}};
+    w.area_ = (xmax - xmin) * (ymax - ymin);
+    w.perimeter_ = 2 * ((xmax - xmin) + (ymax - ymin));
+    return w;
+}
+
+Window Window::polygon(std::vector<Eigen::Vector2d> v) {
+    for (const auto& p : v)
+        if (!std::isfinite(p.x()) || !std::isfinite(p.y())) throw InputError("polygon window has a non-finite vertex");
+    if (v.size() >= 2 && v.front() == v.back()) v.pop_back();
+    // Repeated consecutive vertices add nothing and would make zero-length edges.
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    if (v.size() >= 2 && v.front() == v.back()) v.pop_back();
+    if (v.size() < 3)
+        throw InputError("degenerate polygon window: " + std::to_string(v.size()) +
+                         " distinct vertices (at least 3 are needed)");
+    double scale = 0;
+    for (const auto& p : v) scale = std::max(scale, p.cwiseAbs().maxCoeff());
+    const double tol = 1e-12 * std::max(1.0, scale * scale);
+    const std::size_t n = v.size();
+    if (std::all_of(v.begin() + 2, v.end(), [&](const Vec& p) { return orientation(v[0], v[1], p, tol) == 0; }))
+        throw InputError("degenerate polygon window: its area is zero (all vertices on one line)");
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = i + 1; j < n; ++j) {
+            const bool adjacent = j == i + 1 || (i == 0 && j == n - 1);
+            if (adjacent) {
+                // Adjacent edges share a vertex; they only cross if one folds back onto the other.
+                const Vec& shared = j == i + 1 ? v[j] : v[i];
+                const Vec& p = j == i + 1 ? v[i] : v[(i + 1) % n];
+                const Vec& q = j == i + 1 ? v[(j + 1) % n] : v[n - 1];
+                if (orientation(p, shared, q, tol) == 0 && (p - shared).dot(q - shared) > 0)
+                    throw InputError("polygon window intersects itself (edges " + std::to_string(i + 1) + " and " +
+                                     std::to_string(j + 1) + " overlap)");
+                continue;
+            }
+            if (segmentsIntersect(v[i], v[(i + 1) % n], v[j], v[(j + 1) % n], tol))
+                throw InputError("polygon window intersects itself (edges " + std::to_string(i + 1) + " and " +
+                                 std::to_string(j + 1) + " cross)");
+        }
+    const double a = signedArea(v);
+    if (std::abs(a) <= tol) throw InputError("degenerate polygon window: its area is zero");
+    if (a < 0) std::reverse(v.begin(), v.end());
+    Window w;
+    w.rectangle_ = false;
+    w.vertices_ = std::move(v);
+    w.area_ = std::abs(a);
+    w.lo_ = w.hi_ = w.vertices_.front();
+    for (std::size_t i = 0; i < n; ++i) {
+        w.lo_ = w.lo_.cwiseMin(w.vertices_[i]);
+        w.hi_ = w.hi_.cwiseMax(w.vertices_[i]);
+        w.perimeter_ += (w.vertices_[(i + 1) % n] - w.vertices_[i]).norm();
+    }
+    return w;
+}
+
+Window Window::fromWkt(const std::string& wkt) {
+    std::string s;
+    for (char c : wkt) s += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    const auto bad = [&](const std::string& why) {
+        return InputError("bad WKT polygon '" + wkt + "': " + why + " (expected POLYGON((x y, x y, ...)))");
+    };
+    const auto start = s.find_first_not_of(" \t");
+    if (start == std::string::npos || s.compare(start, 7, "POLYGON") != 0) throw bad("it does not start with POLYGON");
+    const auto open = s.find('(', start + 7);
+    if (open == std::string::npos || s.find_first_not_of(" \t", start + 7) != open) throw bad("no '(' after POLYGON");
+    const auto open2 = s.find_first_not_of(" \t", open + 1);
+    if (open2 == std::string::npos || s[open2] != '(') throw bad("the ring must be in double parentheses");
+    const auto close = s.find(')', open2 + 1);
+    if (close == std::string::npos) throw bad("missing ')'");
+    const auto after = s.find_first_not_of(" \t\r\n", close + 1);
+    if (after == std::string::npos) throw bad("missing the final ')'");
+    if (s[after] == ',') throw bad("polygons with holes are not supported as windows");
+    if (s[after] != ')' || s.find_first_not_of(" \t\r\n", after + 1) != std::string::npos)
+        throw bad("trailing text after the ring");
+    std::vector<Vec> v;
+    std::stringstream ring(wkt.substr(open2 + 1, close - open2 - 1));
+    std::string pair;
+    while (std::getline(ring, pair, ',')) {
+        const char* p = pair.c_str();
+        char* end = nullptr;
+        errno = 0;
+        const double x = std::strtod(p, &end);
+        if (end == p) throw bad("'" + pair + "' is not an 'x y' pair");
+        const char* q = end;
+        const double y = std::strtod(q, &end);
+        if (end == q || errno == ERANGE) throw bad("'" + pair + "' is not an 'x y' pair");
+        while (*end == ' ' || *end == '\t') ++end;
+        if (*end != '\0') throw bad("'" + pair + "' is not an 'x y' pair");
+        v.emplace_back(x, y);
+    }
+    try {
+        return polygon(std::move(v));
+    } catch (const InputError& e) {
+        throw bad(e.what());
+    }
+}
+
+bool Window::contains(const Eigen::Vector2d& p) const {
+    if (rectangle_) return lo_.x() <= p.x() && p.x() <= hi_.x() && lo_.y() <= p.y() && p.y() <= hi_.y();
+    if ((p.array() < lo_.array()).any() || (p.array() > hi_.array()).any()) return false;
+    const std::size_t n = vertices_.size();
+    bool inside = false;
+    for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
+        const Vec& a = vertices_[i];
+        const Vec& b = vertices_[j];
+        if (segmentDistance(p, a, b) == 0.0) return true;  // on the boundary: closed window
+        if ((a.y() > p.y()) != (b.y() > p.y()) && p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
+            inside = !inside;
+    }
+    return inside;
+}
+
+double Window::distanceToBoundary(const Eigen::Vector2d& p) const {
+    if (rectangle_)
+        return std::min({p.x() - lo_.x(), hi_.x() - p.x(), p.y() - lo_.y(), hi_.y() - p.y()});
+    double d = INFINITY;
+    const std::size_t n = vertices_.size();
+    for (std::size_t i = 0; i < n; ++i) d = std::min(d, segmentDistance(p, vertices_[i], vertices_[(i + 1) % n]));
+    return d;
+}
+
+std::string Window::describe() const {
+    if (rectangle_)
+        return "rectangle [" + fmt(lo_.x()) + "," + fmt(hi_.x()) + "]x[" + fmt(lo_.y()) + "," + fmt(hi_.y()) + "]";
+    return "polygon of " + std::to_string(vertices_.size()) + " vertices";
+}
+
+}  // namespace sylva::stand

@@ -1,0 +1,129 @@
+// Reading inventories (stems + plots) and point patterns: valid files, and every kind of bad input
+// giving an InputError that names the file, the line and the problem.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "libstand/InputError.hpp"
+#include "libstand/Inventory.hpp"
+#include "libstand/PointPattern.hpp"
+
+using namespace sylva::stand;
+using sylva::InputError;
+
+namespace {
+
+std::string data(const std::string& file) { return std::string(SYLVAROCK_TEST_DATA) + "/stand/" + file; }
+
+struct Failure {
+    std::string file, message;
+    long line = -1;
+};
+
+template <class F>
+Failure failureOf(F&& f) {
+    try {
+        f();
+    } catch (const InputError& e) {
+        return {e.file(), e.what(), e.line()};
+    }
+    ADD_FAILURE() << "no InputError";
+    return {};
+}
+
+void expectBadStems(const std::string& stems, long line, const std::string& problem,
+                    const std::string& plots = "plots_ok.csv") {
+    const Failure f = failureOf([&] { readInventory(data(stems), data(plots)); });
+    EXPECT_EQ(f.file, data(stems)) << f.message;
+    EXPECT_EQ(f.line, line) << f.message;
+    EXPECT_NE(f.message.find(problem), std::string::npos) << f.message;
+}
+
+void expectBadPlots(const std::string& plots, long line, const std::string& problem) {
+    const Failure f = failureOf([&] { readInventory(data("stems_ok.csv"), data(plots)); });
+    EXPECT_EQ(f.file, data(plots)) << f.message;
+    EXPECT_EQ(f.line, line) << f.message;
+    EXPECT_NE(f.message.find(problem), std::string::npos) << f.message;
+}
+
+TEST(InventoryReader, ReadsStemsAndRectangularPlots) {
+    const Inventory inv = readInventory(data("stems_ok.csv"), data("plots_ok.csv"));
+    EXPECT_EQ(inv.name, "stems_ok");
+    ASSERT_EQ(inv.plots.size(), 2u);
+    ASSERT_EQ(inv.stems.size(), 4u);
+    EXPECT_DOUBLE_EQ(inv.areaHa(), 0.05);  // 20x20 + 10x10 m²
+    EXPECT_EQ(inv.stems[1].plot, "1");
+    EXPECT_EQ(inv.stems[1].id, "2");
+    EXPECT_DOUBLE_EQ(inv.stems[1].x, 2.5);
+    EXPECT_DOUBLE_EQ(inv.stems[1].dbhCm, 10.0);
+    EXPECT_EQ(inv.stems[1].stool, std::optional<std::string>("7"));
+    EXPECT_FALSE(inv.stems[2].stool.has_value());  // empty: a single tree
+    EXPECT_EQ(inv.stems[2].species, "oak");
+    EXPECT_EQ(inv.stems[3].line, 5);
+    EXPECT_TRUE(inv.warnings.empty());
+}
+
+TEST(InventoryReader, ReadsWktPlots) {
+    const Inventory inv = readInventory(data("stems_ok.csv"), data("plots_wkt.csv"));
+    EXPECT_FALSE(inv.plots[1].window.isRectangle());
+    EXPECT_DOUBLE_EQ(inv.areaHa(), (400 + 60 + 24) / 1e4);  // square + L of 10x6 and 6x4
+}
+
+TEST(InventoryReader, StandIsNamedAfterTheStemsFile) {
+    const Inventory inv = readInventory(std::string(SYLVAROCK_DATA) + "/stands/GR1_stems.csv",
+                                        std::string(SYLVAROCK_DATA) + "/stands/GR1_plots.csv");
+    EXPECT_EQ(inv.name, "GR1");
+    EXPECT_EQ(inv.plots.size(), 8u);
+    EXPECT_EQ(inv.stems.size(), 2344u);  // n_stems of the reference summary
+}
+
+TEST(InventoryReader, MissingColumn) { expectBadStems("stems_missing_dbh_column.csv", 1, "missing column 'dbh_cm'"); }
+TEST(InventoryReader, NonNumericDiameter) { expectBadStems("stems_nonnumeric_dbh.csv", 3, "'abc' is not a finite number"); }
+TEST(InventoryReader, NegativeDiameter) { expectBadStems("stems_negative_dbh.csv", 3, "is not positive"); }
+TEST(InventoryReader, StemOutsideItsPlot) { expectBadStems("stems_outside_plot.csv", 3, "lies outside its plot '2'"); }
+TEST(InventoryReader, DuplicateStemId) { expectBadStems("stems_duplicate_id.csv", 4, "duplicate stem id '1' (also on line 2)"); }
+TEST(InventoryReader, StemOfPlotWithoutWindow) { expectBadStems("stems_unknown_plot.csv", 3, "plot '3' has no window"); }
+TEST(InventoryReader, DegenerateWindow) { expectBadPlots("plots_degenerate.csv", 3, "degenerate window"); }
+TEST(InventoryReader, DuplicatePlotId) { expectBadPlots("plots_duplicate_id.csv", 3, "duplicate plot id '1'"); }
+TEST(InventoryReader, SelfIntersectingWktWindow) { expectBadPlots("plots_self_intersecting.csv", 2, "intersects itself"); }
+TEST(InventoryReader, PlotsWithoutGeometry) { expectBadPlots("plots_no_geometry.csv", 1, "xmin,ymin,xmax,ymax or a WKT"); }
+
+TEST(InventoryReader, MissingFile) {
+    const Failure f = failureOf([] { readInventory(data("no_such_file.csv"), data("plots_ok.csv")); });
+    EXPECT_NE(f.message.find("cannot open"), std::string::npos) << f.message;
+}
+
+TEST(InventoryReader, IdenticalPositionsAreValidWithAWarning) {
+    const Inventory inv = readInventory(data("stems_identical_positions.csv"), data("plots_with_empty_plot.csv"));
+    EXPECT_EQ(inv.stems.size(), 3u);
+    ASSERT_EQ(inv.warnings.size(), 3u);  // the coincident stems, empty plots 2 and 3
+    EXPECT_NE(inv.warnings[0].find("same position"), std::string::npos) << inv.warnings[0];
+    EXPECT_NE(inv.warnings[0].find(":3:"), std::string::npos) << inv.warnings[0];
+    EXPECT_NE(inv.warnings[1].find("plot '2' has no stem"), std::string::npos) << inv.warnings[1];
+}
+
+TEST(PointPatternReader, ReadsPointsWithAndWithoutDiameters) {
+    const Inventory a = readPointPattern(data("points_ok.csv"), Window::rectangle(0, 0, 10, 10));
+    EXPECT_TRUE(a.hasDiameters);
+    ASSERT_EQ(a.plots.size(), 1u);
+    ASSERT_EQ(a.stems.size(), 3u);
+    EXPECT_DOUBLE_EQ(a.stems[2].dbhCm, 30);
+    const Inventory b = readPointPattern(data("points_no_dbh.csv"), Window::rectangle(0, 0, 10, 10));
+    EXPECT_FALSE(b.hasDiameters);
+    EXPECT_TRUE(std::isnan(b.stems[0].dbhCm));
+    EXPECT_EQ(b.stems.size(), 4u);
+}
+
+TEST(PointPatternReader, PointOutsideTheWindow) {
+    const Failure f = failureOf([] { readPointPattern(data("points_outside.csv"), Window::rectangle(0, 0, 10, 10)); });
+    EXPECT_EQ(f.file, data("points_outside.csv"));
+    EXPECT_EQ(f.line, 3);
+    EXPECT_NE(f.message.find("outside the window"), std::string::npos) << f.message;
+}
+
+TEST(PointPatternReader, MissingCoordinateColumn) {
+    const Failure f = failureOf([] { readPointPattern(data("points_missing_y.csv"), Window::rectangle(0, 0, 10, 10)); });
+    EXPECT_NE(f.message.find("missing column 'y'"), std::string::npos) << f.message;
+}
+
+}  // namespace

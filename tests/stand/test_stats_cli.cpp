@@ -1,0 +1,145 @@
+// `sylvarock stats` end to end: the JSON the outside checks read, the table, the pcf file against
+// spatstat, figures, and exit code 2 with file:line on bad input.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "libstand/CsvTable.hpp"
+#include "libstand/Inventory.hpp"
+#include "libstand/StandStatistics.hpp"
+#include "test_stand_statistics_data.hpp"
+
+using namespace sylva::stand;
+namespace td = sylva::stand::testdata;
+
+namespace {
+
+struct CliRun {
+    int status = -1;
+    std::string out, err;
+};
+
+std::string slurp(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+CliRun stats(const std::string& args) {
+    const std::string dir = ::testing::TempDir();
+    const std::string out = dir + "/stats_cli_out.txt", err = dir + "/stats_cli_err.txt";
+    const int rc = std::system((std::string(SYLVAROCK_CLI) + " stats " + args + " >" + out + " 2>" + err).c_str());
+    return {WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, slurp(out), slurp(err)};
+}
+
+std::string data(const std::string& file) { return std::string(SYLVAROCK_TEST_DATA) + "/stand/" + file; }
+std::string stand(const std::string& file) { return std::string(SYLVAROCK_DATA) + "/stands/" + file; }
+
+// The first `"key": value` after `from` in the JSON text; NaN for null.
+double jsonNumber(const std::string& json, const std::string& key, std::size_t from = 0) {
+    const std::regex re("\"" + key + "\": (null|[-+0-9.eE]+)");
+    std::smatch m;
+    const std::string tail = json.substr(from);
+    if (!std::regex_search(tail, m, re)) throw std::runtime_error("no key " + key);
+    return m[1] == "null" ? NAN : std::stod(m[1]);
+}
+
+TEST(StatsCli, InventoryJsonCarriesStandAndPlots) {
+    const CliRun r = stats("--stems " + stand("SP2_stems.csv") + " --plots " + stand("SP2_plots.csv") + " --json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const StandStatistics lib = standStatistics(readInventory(stand("SP2_stems.csv"), stand("SP2_plots.csv")));
+    const std::size_t at = r.out.find("\"stand\": {");
+    ASSERT_NE(at, std::string::npos);
+    // %.10g: ten significant digits, so 1e-9 relative.
+    const auto same = [](double got, double want) { EXPECT_NEAR(got, want, 1e-9 * std::abs(want)); };
+    same(jsonNumber(r.out, "stems_per_ha", at), lib.stand.stemsPerHa);
+    same(jsonNumber(r.out, "basal_area_m2_ha", at), *lib.stand.basalAreaM2Ha);
+    same(jsonNumber(r.out, "mean_dbh_cm", at), *lib.stand.meanDbhCm);
+    same(jsonNumber(r.out, "sd_dbh_cm", at), *lib.stand.sdDbhCm);
+    same(jsonNumber(r.out, "stool_share", at), *lib.stand.stoolShare);
+    same(jsonNumber(r.out, "donnelly", at), *lib.stand.clarkEvans.donnelly);
+    EXPECT_NE(r.out.find("\"note\": \"the stand's Clark-Evans indices are the means of the per-plot values"),
+              std::string::npos);
+    const std::size_t plots = r.out.find("\"plots\": [");
+    ASSERT_NE(plots, std::string::npos);
+    EXPECT_NE(r.out.find("\"id\": \"8\"", plots), std::string::npos);
+    EXPECT_NE(r.out.find("\"empty\": false", plots), std::string::npos);
+    same(jsonNumber(r.out, "stems_per_ha", plots), lib.plots[0].stats.stemsPerHa);
+}
+
+TEST(StatsCli, TableIsTheDefault) {
+    const CliRun r = stats("--stems " + data("stems_ok.csv") + " --plots " + data("plots_with_empty_plot.csv"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("Stand stems_ok: 3 plots"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("Plot 3 has no stem"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("means of the per-plot values"), std::string::npos) << r.out;
+    EXPECT_NE(r.err.find("warning: "), std::string::npos) << r.err;  // the empty plots
+}
+
+TEST(StatsCli, PointsInRectangleAndPolygon) {
+    const CliRun rect = stats("--points " + data("points_ok.csv") + " --window 0,0,10,10 --json");
+    ASSERT_EQ(rect.status, 0) << rect.err;
+    EXPECT_DOUBLE_EQ(jsonNumber(rect.out, "stems_per_ha"), 3 / 0.01);
+    EXPECT_FALSE(std::isnan(jsonNumber(rect.out, "donnelly")));
+    const CliRun poly = stats("--points " + data("points_ok.csv") +
+                           " --window-wkt 'POLYGON((0 0, 10 0, 10 10, 0 10, 0 0))' --json");
+    ASSERT_EQ(poly.status, 0) << poly.err;
+    EXPECT_TRUE(std::isnan(jsonNumber(poly.out, "donnelly")));  // null: Donnelly needs a rectangle
+    EXPECT_DOUBLE_EQ(jsonNumber(poly.out, "guard"), jsonNumber(rect.out, "guard"));
+    const CliRun nodbh = stats("--points " + data("points_no_dbh.csv") + " --window 0,0,10,10 --json");
+    ASSERT_EQ(nodbh.status, 0) << nodbh.err;
+    EXPECT_TRUE(std::isnan(jsonNumber(nodbh.out, "basal_area_m2_ha")));
+}
+
+TEST(StatsCli, PcfFileAgreesWithSpatstat) {
+    const std::string csv = ::testing::TempDir() + "/stats_cli_pcf.csv";
+    const CliRun r = stats("--points " + td::spatstatDir() + "spruces_points.csv --window 0,0,56,38 --pcf-rmax 9.5 "
+                        "--pcf-nr 51 --pcf-out " + csv);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const sylva::CsvTable t = sylva::CsvTable::parse(slurp(csv), csv);
+    ASSERT_EQ(t.header(), (std::vector<std::string>{"r", "g_trans", "g_iso"}));
+    const td::ReferencePcf ref = td::spatstatPcf("spruces");
+    ASSERT_EQ(t.rows(), ref.r.size() + 1);
+    int compared = 0;
+    for (std::size_t k = 0; k < ref.r.size(); ++k) {
+        if (ref.trans[k] <= 0.1) continue;
+        // The issue's 1e-3 (the library agrees to ~1e-14; the file's %.10g adds 1e-10).
+        EXPECT_NEAR(t.number(k + 1, 1), ref.trans[k], 1e-3 * ref.trans[k]) << ref.r[k];
+        EXPECT_NEAR(t.number(k + 1, 2), ref.iso[k], 1e-3 * ref.iso[k]) << ref.r[k];
+        ++compared;
+    }
+    EXPECT_GT(compared, 40);
+}
+
+TEST(StatsCli, FiguresWithGnuplot) {
+    const std::string dir = ::testing::TempDir() + "/stats_cli_figures";
+    const CliRun r = stats("--stems " + data("stems_ok.csv") + " --plots " + data("plots_ok.csv") + " --plot-dir " + dir);
+    ASSERT_EQ(r.status, 0) << r.err;  // never fails because of figures
+    if (std::system("gnuplot --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "gnuplot not installed";
+    EXPECT_NE(slurp(dir + "/pcf.svg").find("<svg"), std::string::npos);
+    EXPECT_NE(slurp(dir + "/dbh_histogram.svg").find("<svg"), std::string::npos);
+}
+
+TEST(StatsCli, BadInputExitsWithFileAndLine) {
+    const CliRun r = stats("--stems " + data("stems_negative_dbh.csv") + " --plots " + data("plots_ok.csv"));
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find(data("stems_negative_dbh.csv") + ":3:"), std::string::npos) << r.err;
+    EXPECT_TRUE(r.out.empty());
+}
+
+TEST(StatsCli, InconsistentOptionsExit2) {
+    EXPECT_EQ(stats("--points " + data("points_ok.csv")).status, 2);
+    EXPECT_EQ(stats("--stems " + data("stems_ok.csv")).status, 2);
+    EXPECT_EQ(stats("--points " + data("points_ok.csv") + " --window 0,0,10").status, 2);
+    const CliRun r = stats("--points " + data("points_ok.csv") + " --window-wkt 'POLYGON((0 0, 1 1))'");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--window-wkt"), std::string::npos) << r.err;
+}
+
+}  // namespace

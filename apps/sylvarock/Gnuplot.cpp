@@ -6,7 +6,7 @@
 namespace sylva::cli {
 
 bool plotWithGnuplot(const std::string& script, const std::string& what) {
-    FILE* p = popen("gnuplot 2>&1", "w");
+    FILE* p = popen("gnuplot 1>&2", "w");
     if (!p) {
         std::cerr << "warning: cannot start gnuplot; " << what << " not drawn\n";
         return false;

@@ -1,4 +1,4 @@
-// sylvarock generate: virtual forests over a slope from a stand's inventory (docs/stand-generation.md).
+// sylvarock generate: virtual forests over a slope from a stand's inventory (docs/stand.md, "Virtual forests").
 #include <cstdio>
 #include <cstring>
 #include <iostream>

@@ -8,7 +8,7 @@ namespace sylva::stand {
 namespace {
 // Eq. 11 is a parabola in D (m) whose vertex is at D = 73.805 / (2 * 54.734) = 0.6742 m. Beyond it
 // the fit (made on beech of ordinary sizes) would make thicker trees shorter, and below 1.3 m for
-// D > 1.35 m; we hold H_T at the vertex value there (docs/stand-generation.md).
+// D > 1.35 m; we hold H_T at the vertex value there (docs/stand.md, "Virtual forests").
 constexpr double kLinear = 73.805;     // Eq. 11
 constexpr double kQuadratic = 54.734;  // Eq. 11
 constexpr double kVertexDiameterM = kLinear / (2 * kQuadratic);

@@ -117,7 +117,7 @@ TEST_P(GenerateTable3, ForestsKeepTheInventoryStatistics) {
     const Window slope = Window::rectangle(0, 0, 500, 200);
     const Measured a = checkForest(catalogue, slope, ForestStructure::Aggregated, ref, refR);
     const Measured na = checkForest(catalogue, slope, ForestStructure::Random, ref, refR);
-    // One line per stand for docs/stand-generation.md (inventory | A | NA: N, Mean_D, Std_D, G, R).
+    // One line per stand for docs/stand.md, "Virtual forests" (inventory | A | NA: N, Mean_D, Std_D, G, R).
     std::printf("TABLE3 %s | %.0f %.2f %.2f %.2f %.3f | %.0f %.2f %.2f %.2f %.3f | %.0f %.2f %.2f %.2f %.3f\n", stand.c_str(),
                 ref.stemsPerHa, ref.meanDbh, ref.sdDbh, ref.basalArea, refR, a.stats.stemsPerHa, a.stats.meanDbh,
                 a.stats.sdDbh, a.stats.basalArea, a.clarkEvans, na.stats.stemsPerHa, na.stats.meanDbh, na.stats.sdDbh,

@@ -1,6 +1,6 @@
 #pragma once
 // Virtual forests over a slope from a stand's inventory (paper Sect. 2.2.2), the algorithm and its
-// choices are in docs/stand-generation.md:
+// choices are in docs/stand.md, "Virtual forests":
 //  - Aggregated (A): stool centroids uniform in the extent (a Poisson process conditioned on its
 //    count, stools/ha of the inventory), each stool a whole inventory stool (offsets, rotated at
 //    random, diameters, species), then single trees drawn from the inventory's single trees, placed

@@ -32,8 +32,9 @@ std::string slurp(const std::string& path) {
 }
 
 CliRun stats(const std::string& args) {
-    const std::string dir = ::testing::TempDir();
-    const std::string out = dir + "/stats_cli_out.txt", err = dir + "/stats_cli_err.txt";
+    // One file pair per test: CTest runs the tests of this file in parallel processes.
+    const std::string tag = ::testing::TempDir() + "/stats_cli_" + ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    const std::string out = tag + "_out.txt", err = tag + "_err.txt";
     const int rc = std::system((std::string(SYLVAROCK_CLI) + " stats " + args + " >" + out + " 2>" + err).c_str());
     return {WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, slurp(out), slurp(err)};
 }

@@ -63,7 +63,8 @@ int runSimulate(int argc, const char* const* argv) {
         ("runs", po::value<int>()->default_value(100), "number of block runs")
         ("seed", po::value<unsigned long>()->default_value(1), "campaign seed; run i uses a seed derived from (seed, i)")
         ("threads", po::value<int>()->default_value(0), "worker threads (0: all cores); results do not depend on it")
-        ("out", po::value<std::string>(), "output directory (runs.csv, summary.json, figures)")
+        ("out", po::value<std::string>(), "output directory (runs.csv, summary.json, impacts.csv, figures)")
+        ("forest", po::value<std::string>(), "forest CSV (sylvarock generate's, or any x,y,dbh_cm[,stool] tree file) in the terrain's frame")
         ("trajectory", po::bool_switch(), "also write sampled trajectories (CSV and VTK) to OUT/trajectories/")
         ("block", po::value<std::string>(), "block shape override: cube | cuboid | sphere")
         ("set", po::value(&sets)->composing(), "override a scene key: --set section.key=value (repeatable)")
@@ -82,6 +83,8 @@ int runSimulate(int argc, const char* const* argv) {
     if (!vm.count("scene")) throw InputError("--scene is required (e.g. data/scenes/no-forest.ini)");
     if (!vm.count("out")) throw InputError("--out DIR is required");
     if (vm.count("block")) sets.insert(sets.begin(), "block.shape=" + vm["block"].as<std::string>());
+    if (vm.count("forest"))
+        sets.insert(sets.begin(), "forest.file=" + std::filesystem::absolute(vm["forest"].as<std::string>()).string());
     const int runs = vm["runs"].as<int>();
     if (runs < 1) throw InputError("--runs must be at least 1");
 
@@ -91,7 +94,9 @@ int runSimulate(int argc, const char* const* argv) {
     const dem::Scene scene(dem::loadScene(vm["scene"].as<std::string>(), sets));
     std::cerr << "scene: " << scene.soil().size() << " soil spheres over x [" << scene.soil().xmin() << ", "
               << scene.soil().xmax() << "] m; block " << dem::toString(scene.config().block.shape) << " of "
-              << scene.blockTemplate().mass() << " kg\n";
+              << scene.blockTemplate().mass() << " kg";
+    if (scene.forested()) std::cerr << "; forest of " << scene.forest().trees.size() << " stems";
+    std::cerr << "\n";
 
     dem::CampaignOptions c;
     c.runs = runs;
@@ -106,6 +111,7 @@ int runSimulate(int argc, const char* const* argv) {
     const auto s = dem::summarise(results);
     dem::writeRunsCsv(out + "/runs.csv", results);
     dem::writeSummaryJson(out + "/summary.json", s, wall, vm["scene"].as<std::string>());
+    if (scene.forested()) dem::writeImpactsCsv(out + "/impacts.csv", results);
     if (c.run.recordTrajectory) dem::writeTrajectories(out + "/trajectories", results);
     if (!vm["no-figures"].as<bool>()) drawFigures(out, scene, results);
 

@@ -24,15 +24,20 @@ std::uint64_t runSeed(std::uint64_t campaignSeed, int run) {
 }
 
 std::vector<RunResult> runCampaign(const Scene& scene, const CampaignOptions& options) {
-    std::vector<RunResult> results(options.runs);
+    std::vector<int> indices = options.only;
+    if (indices.empty())
+        for (int i = 0; i < options.runs; ++i) indices.push_back(i);
+    const int total = static_cast<int>(indices.size());
+    std::vector<RunResult> results(total);
     std::atomic<int> next{0};
     std::mutex mutex;
     int done = 0;
     std::exception_ptr failure;
     auto worker = [&] {
         for (;;) {
-            const int i = next.fetch_add(1);
-            if (i >= options.runs) return;
+            const int slot = next.fetch_add(1);
+            if (slot >= total) return;
+            const int i = indices[slot];
             {
                 std::lock_guard<std::mutex> lock(mutex);
                 if (failure) return;
@@ -40,9 +45,9 @@ std::vector<RunResult> runCampaign(const Scene& scene, const CampaignOptions& op
             try {
                 RunResult r = simulateBlock(scene, i, runSeed(options.seed, i), options.run);
                 std::lock_guard<std::mutex> lock(mutex);
-                results[i] = std::move(r);
+                results[slot] = std::move(r);
                 ++done;
-                if (options.onRunDone) options.onRunDone(results[i], done, options.runs);
+                if (options.onRunDone) options.onRunDone(results[slot], done, total);
             } catch (const SimulationError& e) {
                 std::lock_guard<std::mutex> lock(mutex);
                 if (!failure)
@@ -55,7 +60,7 @@ std::vector<RunResult> runCampaign(const Scene& scene, const CampaignOptions& op
         }
     };
     int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
-    threads = std::max(1, std::min(threads, options.runs));
+    threads = std::max(1, std::min(threads, total));
     std::vector<std::thread> pool;
     for (int k = 0; k < threads; ++k) pool.emplace_back(worker);
     for (auto& th : pool) th.join();

@@ -65,17 +65,31 @@ std::ofstream openOut(const std::string& path) {
 void writeRunsCsv(const std::string& path, const std::vector<RunResult>& runs) {
     auto out = openOut(path);
     out << "run,seed,release_x,release_y,release_z,stop_x,stop_y,stop_z,runout_m,runout_horizontal_m,energy_line_deg,"
-           "stop_reason,max_speed_m_s,mean_speed_m_s,max_bounce_m,duration_s,cpu_s,steps,mean_dt_s,energy_imbalance\n";
+           "stop_reason,max_speed_m_s,mean_speed_m_s,max_bounce_m,duration_s,cpu_s,steps,mean_dt_s,energy_imbalance,tree_impacts\n";
     char buf[512];
     for (const auto& r : runs) {
         std::snprintf(buf, sizeof buf,
-                      "%d,%llu,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%s,%.4f,%.4f,%.4f,%.4f,%.6f,%ld,%.3e,%.3e\n",
+                      "%d,%llu,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%s,%.4f,%.4f,%.4f,%.4f,%.6f,%ld,%.3e,%.3e,%zu\n",
                       r.run, static_cast<unsigned long long>(r.seed), r.release.x(), r.release.y(), r.release.z(),
                       r.stop.x(), r.stop.y(), r.stop.z(), r.runoutAlongSlope, r.runoutHorizontal, r.energyLineDeg,
                       toString(r.reason).c_str(), r.maxSpeed, r.meanSpeed, r.maxBounce, r.duration, r.cpuSeconds,
-                      r.steps, r.meanDt, r.energy.imbalance);
+                      r.steps, r.meanDt, r.energy.imbalance, r.impacts.size());
         out << buf;
     }
+}
+
+void writeImpactsCsv(const std::string& path, const std::vector<RunResult>& runs) {
+    auto out = openOut(path);
+    out << "run,tree,time_s,speed_before_m_s,speed_after_m_s,energy_before_j,energy_after_j,impact_height_m,"
+           "eccentricity,stem_broken,root_yielded\n";
+    char buf[256];
+    for (const auto& r : runs)
+        for (const auto& i : r.impacts) {
+            std::snprintf(buf, sizeof buf, "%d,%ld,%.4f,%.4f,%.4f,%.1f,%.1f,%.3f,%.3f,%d,%d\n", r.run, i.tree, i.time,
+                          i.speedBefore, i.speedAfter, i.energyBefore, i.energyAfter, i.height, i.eccentricity,
+                          i.stemBroken ? 1 : 0, i.rootYielded ? 1 : 0);
+            out << buf;
+        }
 }
 
 void writeSummaryJson(const std::string& path, const CampaignSummary& s, double wallSeconds, const std::string& scene) {

@@ -32,6 +32,7 @@ po::options_description sceneKeys(SceneConfig& c, std::string& shape, std::strin
     d.add_options()
         ("terrain.profile", po::value(&t.profile), "slope profile CSV with columns x,z (m), relative to the scene file")
         ("terrain.dtm", po::value(&t.dtm), "or a DTM as an ESRI ASCII grid (.asc)")
+        ("forest.file", po::value(&c.forestFile), "forest CSV (from sylvarock generate, or x,y,dbh_cm[,stool]); relative to the scene file")
         ("terrain.width_m", po::value(&t.soil.width)->default_value(t.soil.width, text(t.soil.width)), "extent across the slope of a profile terrain, m")
         ("terrain.soil_radius_m", po::value(&t.soil.radius)->default_value(t.soil.radius, text(t.soil.radius)), "R_soil, m (Table 2: 0.7)")
         ("terrain.roughness_m", po::value(&t.soil.roughness)->default_value(t.soil.roughness, text(t.soil.roughness)), "bump height between soil spheres, m (Table 2: 0.1)")
@@ -49,9 +50,11 @@ po::options_description sceneKeys(SceneConfig& c, std::string& shape, std::strin
         ("block.d3_m", po::value(&b.d3), "cuboid edge 3, m")
         ("block.density_kg_m3", po::value(&b.densityKgM3)->default_value(b.densityKgM3, text(b.densityKgM3)), "kg/m^3 (Table 2: 2700)")
         ("release.x_m", po::value(&r.x)->default_value(r.x, text(r.x)), "release x, m")
-        ("release.y_m", po::value(&r.y)->default_value(r.y, text(r.y)), "release y, m (fixed)")
+        ("release.y_m", po::value(&r.y)->default_value(r.y, text(r.y)), "release y, m (runs without forest)")
         ("release.y_min_m", po::value(&r.yMin), "release y drawn uniformly in [y_min_m, y_max_m]")
         ("release.y_max_m", po::value(&r.yMax), "")
+        ("release.forest_y_min_m", po::value(&r.forestYMin)->default_value(r.forestYMin, text(r.forestYMin)), "with a forest and no y range: y uniform in [forest_y_min_m, forest_y_max_m] (Sect. 2.3.2)")
+        ("release.forest_y_max_m", po::value(&r.forestYMax)->default_value(r.forestYMax, text(r.forestYMax)), "")
         ("release.fall_height_m", po::value(&r.fallHeight)->default_value(r.fallHeight, text(r.fallHeight)), "block centre above the surface, m")
         ("release.orientation", po::value(&orientation)->default_value(orientation, text(orientation)), "random (angles in [0,180) deg about x,y,z) | fixed")
         ("integration.safety", po::value(&i.safety)->default_value(i.safety, text(i.safety)), "time step as a fraction of the stable limit")
@@ -107,6 +110,7 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
     if (orientation != "random" && orientation != "fixed")
         throw InputError("release.orientation must be random or fixed, not '" + orientation + "'");
     c.release.randomOrientation = orientation == "random";
+    c.release.yRangeGiven = vm.count("release.y_min_m") || vm.count("release.y_max_m");
     if (!vm.count("release.y_min_m")) c.release.yMin = c.release.y;
     if (!vm.count("release.y_max_m")) c.release.yMax = c.release.y;
     if (c.release.yMax < c.release.yMin) throw InputError("release.y_max_m is below release.y_min_m");
@@ -122,7 +126,7 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
     // Terrain paths are relative to the scene file.
     if (path) {
         const auto dir = std::filesystem::path(*path).parent_path();
-        for (std::string* p : {&c.terrain.profile, &c.terrain.dtm})
+        for (std::string* p : {&c.terrain.profile, &c.terrain.dtm, &c.forestFile})
             if (!p->empty() && std::filesystem::path(*p).is_relative()) *p = (dir / *p).lexically_normal().string();
     }
     return c;

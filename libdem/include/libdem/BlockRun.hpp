@@ -25,6 +25,17 @@ struct EnergyBudget {
     double imbalance = 0;        // largest |total - initial| seen, relative to the energy converted
 };
 
+// One block/tree impact: what the block had before and after, and what became of the tree.
+struct TreeImpact {
+    long tree = 0;              // stem id in the forest file
+    double time = 0;            // s since release, at first contact
+    double speedBefore = 0, speedAfter = 0;    // m/s
+    double energyBefore = 0, energyAfter = 0;  // block's kinetic energy, J
+    double height = 0;          // above the stem's foot, m
+    double eccentricity = 0;    // lateral offset of the block's centre from the stem axis / (r_block + r_stem), in [-1, 1]
+    bool stemBroken = false, rootYielded = false;
+};
+
 struct RunResult {
     int run = 0;
     std::uint64_t seed = 0;
@@ -36,6 +47,7 @@ struct RunResult {
     long steps = 0;
     double meanDt = 0;
     EnergyBudget energy;
+    std::vector<TreeImpact> impacts;
     std::vector<TrajectorySample> trajectory;  // filled when asked for
 };
 

@@ -13,6 +13,9 @@ std::uint64_t runSeed(std::uint64_t campaignSeed, int run);
 
 struct CampaignOptions {
     int runs = 100;
+    // If not empty, run only these run indices (each still seeded from (seed, index)), e.g. the
+    // runs an interrupted campaign had not finished; results come back in this order.
+    std::vector<int> only;
     std::uint64_t seed = 1;
     int threads = 0;  // 0: all cores
     RunOptions run;
@@ -20,7 +23,7 @@ struct CampaignOptions {
     std::function<void(const RunResult&, int done, int total)> onRunDone;
 };
 
-// Results in run order. A run that fails (SimulationError) stops the campaign with that error,
+// Results in run order (or in the order of `only`). A run that fails (SimulationError) stops the campaign with that error,
 // prefixed by the run's index and seed so it can be replayed alone.
 std::vector<RunResult> runCampaign(const Scene& scene, const CampaignOptions& options);
 

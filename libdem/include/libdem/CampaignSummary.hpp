@@ -28,6 +28,8 @@ CampaignSummary summarise(const std::vector<RunResult>& runs);
 double quantile(std::vector<double> values, double p);
 
 void writeRunsCsv(const std::string& path, const std::vector<RunResult>& runs);
+// One row per block/tree impact of every run.
+void writeImpactsCsv(const std::string& path, const std::vector<RunResult>& runs);
 void writeSummaryJson(const std::string& path, const CampaignSummary& s, double wallSeconds, const std::string& scene);
 // One CSV per run (t,x,y,z,vx,vy,vz,wx,wy,wz,ek_translation_j,ek_rotation_j) and one legacy VTK
 // polyline per run (ParaView), in dir.

@@ -5,23 +5,29 @@
 
 #include "libdem/ContactLawTable.hpp"
 #include "libdem/SceneConfig.hpp"
+#include "libstand/Forest.hpp"
 
 namespace sylva::dem {
 
 class Scene {
 public:
-    explicit Scene(SceneConfig config);  // throws InputError on an unusable terrain or block
+    // Throws InputError on an unusable terrain, block or forest. The forest is the one of
+    // config.forestFile if that is set, else `forest` (coordinates as in the terrain's frame).
+    explicit Scene(SceneConfig config, stand::Forest forest = {});
 
     const SceneConfig& config() const { return config_; }
     const SoilBed& soil() const { return *soil_; }
     const RigidBody& blockTemplate() const { return block_; }
     const ContactLawTable& laws() const { return laws_; }
+    const stand::Forest& forest() const { return forest_; }
+    bool forested() const { return !forest_.trees.empty(); }
 
 private:
     SceneConfig config_;
     std::shared_ptr<const SoilBed> soil_;
     RigidBody block_;
     ContactLawTable laws_;
+    stand::Forest forest_;
 };
 
 }  // namespace sylva::dem

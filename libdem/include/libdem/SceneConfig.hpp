@@ -18,7 +18,9 @@ struct TerrainConfig {
 struct ReleaseConfig {
     double x = 100;             // m (Sect. 2.3.2)
     double y = 100;             // m, used when yMin == yMax
-    double yMin = 100, yMax = 100;  // forest runs: Y uniform in [80, 120]
+    double yMin = 100, yMax = 100;  // y drawn uniformly in [yMin, yMax] when yRangeGiven
+    bool yRangeGiven = false;
+    double forestYMin = 80, forestYMax = 120;  // the range used in forest runs unless one is given
     double fallHeight = 5;      // centre of the block above the surface, m
     bool randomOrientation = true;  // angles uniform in [0, 180 deg) about x, y, z (Sect. 2.3.2)
 };
@@ -39,6 +41,7 @@ struct StopConfig {
 struct SceneConfig {
     std::string sourceFile;     // the scene file, for messages
     TerrainConfig terrain;
+    std::string forestFile;     // forest CSV (sylvarock generate's, or x,y,dbh_cm[,stool]); empty: no forest
     SoilContactParams soilContact;
     BlockSpec block;
     ReleaseConfig release;

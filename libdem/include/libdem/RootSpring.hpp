@@ -1,0 +1,31 @@
+#pragma once
+// The root system of a single tree (paper Sect. 2.1.2, Eqs. 9-10): an elastic-perfectly plastic
+// rotational spring between the ground and the stem's foot, stiffness K_Root, moment limited to M_a.
+// It is the trilinear hinge with K_Plast = 0, K_Unld = K_Elast and no rupture. The paper gives the
+// x and y axes only; the twist about the stem axis is held by a linear spring of the same K_Root,
+// so that a rubbing block cannot spin the whole tree in its soil (docs/model-stems.md).
+#include <Eigen/Core>
+
+#include "libdem/BendingLaw.hpp"
+
+namespace sylva::dem {
+
+class RootSpring {
+public:
+    RootSpring(const RootSpringParams& p, BendingReading reading);
+
+    // Follows an increment of the foot's rotation relative to the ground (x, y, z of the foot's
+    // frame, rad) and returns the plastic work it dissipated, J.
+    double rotate(const Eigen::Vector3d& dTheta);
+
+    Eigen::Vector3d moment() const;  // N m: bending x, y (Eqs. 9-10) and twist z
+    double storedEnergy() const;
+    double stiffness() const { return stiffness_; }
+
+private:
+    BendingLaw bending_;
+    double stiffness_;
+    double twistAngle_ = 0;
+};
+
+}  // namespace sylva::dem

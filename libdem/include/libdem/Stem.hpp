@@ -1,0 +1,95 @@
+#pragma once
+// A tree stem as a chain of rigid nodes from the foot up (paper Sect. 2.1.2, Fig. 2).
+// Geometry: a truncated cone through the DBH at 1.3 m, tapering linearly to StemParams::tipDiameter
+// at H_T. Each cone segment's mass goes half to each of its nodes; the crown mass m_C is spread
+// equally over the nodes within L_C of the top. Between neighbouring nodes a connection of length l
+// and mean diameter D_con carries linear elastic axial, shear and twist springs (MOE and
+// G = MOE / (2 (1 + nu))) and the trilinear bending law. The foot is clamped (coppice stems) or held
+// in place and turning on the root spring (single trees). A broken connection transmits nothing:
+// the part above keeps moving as a free chain.
+// Node state is kept as arrays over nodes so that a step is a few loops over contiguous memory.
+#include <vector>
+
+#include "libdem/BendingLaw.hpp"
+#include "libdem/RigidBody.hpp"
+#include "libdem/RootSpring.hpp"
+#include "libdem/StemLedger.hpp"
+#include "libdem/StemParams.hpp"
+
+namespace sylva::dem {
+
+// Size of a stem: lengths in m, mass in kg.
+struct StemGeometry {
+    double height = 0;       // H_T, from the foot to the top
+    double dbh = 0;          // diameter at breast height (1.3 m above the foot), m
+    double crownLength = 0;  // L_C, measured down from the top
+    double crownMass = 0;    // m_C
+};
+
+// Beech allometry (Eqs. 11-13, libstand/Allometry.hpp) for a stem of this DBH in cm.
+// Throws InputError unless dbhCm > 0.
+StemGeometry beechStem(double dbhCm);
+
+enum class StemFoot { Clamped, RootSpring };
+
+class Stem {
+public:
+    // A straight stem standing vertically (every node's local z up) on `foot`.
+    // Throws InputError on out-of-range geometry or parameters.
+    Stem(const StemGeometry& g, const StemParams& p, const Vec3& foot, StemFoot support);
+
+    // Node state, world frame. Velocities are the leapfrog's mid-step values. Node 0 is the foot:
+    // it never translates, and turns only on the root spring.
+    std::vector<Vec3> position, velocity, angularVelocity;
+    std::vector<Quat> orientation;
+    StemLedger ledger;
+
+    std::size_t nodeCount() const { return position.size(); }
+    std::size_t connectionCount() const { return connections_.size(); }
+    const std::vector<double>& mass() const { return mass_; }
+    // Rotational inertia of each node about its centre, taken isotropic: that of its share of the
+    // stem about a transverse axis, m (D^2/16 + L^2/12), L the share's length.
+    const std::vector<double>& inertia() const { return inertia_; }
+    const StemGeometry& geometry() const { return geometry_; }
+    StemFoot foot() const { return support_; }
+    bool translates(std::size_t node) const { return node > 0; }
+    bool rotates(std::size_t node) const { return node > 0 || support_ == StemFoot::RootSpring; }
+    double restHeight(std::size_t node) const { return node * length_; }  // above the foot, unloaded
+    double diameterAt(double heightAboveFoot) const;
+    double connectionLength() const { return length_; }  // l
+    double connectionDiameter(std::size_t c) const { return connections_[c].diameter; }  // D_con, between nodes c and c+1
+    const BendingLaw& bending(std::size_t c) const { return connections_[c].bending; }
+    bool broken(std::size_t c) const { return connections_[c].bending.broken(); }
+    const RootSpring& root() const { return root_; }
+
+    // Brings every connection and the root spring to the current node configuration and adds their
+    // forces and torques to `force` and `torque` (sized nodeCount()). The laws are incremental: call
+    // once per step, dt being the step about to be taken (it weighs the viscous work).
+    void updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque, double dt);
+    double elasticEnergy() const { return elasticEnergy_; }  // in all springs at the last update, J
+    double kineticEnergy() const;  // from the current velocities, J
+    // Largest stable explicit step: for each moving node, a Gershgorin bound of the highest
+    // eigen-frequency of the springs acting on it (stiffest connections, lightest nodes), with the
+    // bending viscosity's damping ratio (StableStep).
+    double stableTimeStep() const;
+
+private:
+    struct Connection {
+        double diameter;  // D_con
+        double axial, shear, twist;  // N/m, N/m, N m/rad
+        BendingLaw bending;
+        Vec2 bendingAngle = Vec2::Zero();  // relative rotation about x, y at the last update
+    };
+    StemGeometry geometry_;
+    StemParams params_;
+    StemFoot support_;
+    double length_;
+    Quat footRest_;
+    Eigen::Vector3d rootAngle_ = Eigen::Vector3d::Zero();
+    std::vector<double> mass_, inertia_;
+    std::vector<Connection> connections_;
+    RootSpring root_;
+    double elasticEnergy_ = 0;
+};
+
+}  // namespace sylva::dem

@@ -1,0 +1,39 @@
+#pragma once
+// Mechanical and discretisation parameters of a tree stem. Defaults are the paper's Table 2 (beech,
+// Sect. 2.1.2) as read in model-notes.md; the choices the paper leaves open are marked.
+namespace sylva::dem {
+
+// How Fig. 3 acts on the two bending axes (docs/model-stems.md argues the default).
+enum class BendingReading {
+    Isotropic,  // the trilinear law on the magnitude of the moment vector, direction following the rotation
+    PerAxis,    // the paper's words: an independent trilinear law about x and about y of the connection frame
+};
+
+struct BendingParams {
+    double moe = 8.7e9;          // MOE, Pa (Eq. 2)
+    double ePlast = 2.1e9;       // E_Plast, Pa (Eq. 3)
+    double eUnld = 5.3e9;        // E_Unld, Pa (Eq. 4)
+    double sigmaElast = 37e6;    // sigma_Elast, Pa (Eq. 5)
+    double sigmaRupt = 94e6;     // sigma_Rupt, Pa (Eq. 6)
+    double tau = 5e-4;           // tau, s (Eqs. 7-8)
+    BendingReading reading = BendingReading::Isotropic;
+};
+
+struct RootSpringParams {
+    double stiffness = 7.5e6;    // K_Root, N m/rad (Eqs. 9-10; Table 2's units are swapped, model-notes.md)
+    double yieldMoment = 200e3;  // M_a, N m
+};
+
+struct StemParams {
+    BendingParams bending;
+    RootSpringParams root;
+    double density = 1200;       // fresh wood, kg/m^3
+    double poisson = 0.3;        // nu: not in the paper; G = MOE / (2 (1 + nu))
+    double nodeSpacing = 0.5;    // m, upper bound: the stem is cut into ceil(H_T / spacing) equal connections
+    double tipDiameter = 0.01;   // m, diameter of the truncated cone at H_T (docs/model-stems.md)
+};
+
+// Throws InputError naming the first parameter that is out of range.
+void validate(const StemParams& p);
+
+}  // namespace sylva::dem

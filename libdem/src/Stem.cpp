@@ -1,0 +1,200 @@
+#include "libdem/Stem.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "libdem/StableStep.hpp"
+#include "libstand/Allometry.hpp"
+#include "libstand/InputError.hpp"
+
+namespace sylva::dem {
+
+namespace {
+
+const double kPi = std::acos(-1.0);
+constexpr double kBreastHeight = 1.3;  // m, where the DBH is measured
+
+// Rotation vector (axis times angle, rad) of q, taking the shorter way round.
+Vec3 rotationVector(Quat q) {
+    if (q.w() < 0) q.coeffs() *= -1;
+    const double s = q.vec().norm();
+    if (s < 1e-300) return 2 * q.vec();
+    return 2 * std::atan2(s, q.w()) / s * q.vec();
+}
+
+// Half of the rotation whose rotation vector is theta.
+Quat halfTurn(const Vec3& theta) {
+    const double angle = theta.norm();
+    if (angle == 0.0) return Quat::Identity();
+    return Quat(Eigen::AngleAxisd(0.5 * angle, theta / angle));
+}
+
+void validate(const StemGeometry& g, const StemParams& p) {
+    const auto fail = [](const std::string& what) { throw InputError("stem geometry: " + what); };
+    if (!(g.dbh > 0) || !std::isfinite(g.dbh)) fail("DBH " + std::to_string(g.dbh) + " m must be > 0");
+    if (!(g.height > kBreastHeight) || !std::isfinite(g.height))
+        fail("height " + std::to_string(g.height) + " m must exceed the breast height 1.3 m");
+    if (!(g.crownLength >= 0 && g.crownLength <= g.height))
+        fail("crown length " + std::to_string(g.crownLength) + " m must be in [0, height]");
+    if (!(g.crownMass >= 0) || !std::isfinite(g.crownMass))
+        fail("crown mass " + std::to_string(g.crownMass) + " kg must be >= 0");
+    if (p.tipDiameter > g.dbh)
+        fail("tip diameter " + std::to_string(p.tipDiameter) + " m exceeds the DBH " + std::to_string(g.dbh) + " m");
+}
+
+}  // namespace
+
+StemGeometry beechStem(double dbhCm) {
+    if (!(dbhCm > 0) || !std::isfinite(dbhCm)) throw InputError("stem DBH " + std::to_string(dbhCm) + " cm must be > 0");
+    StemGeometry g;
+    g.dbh = dbhCm / 100;
+    g.height = stand::treeHeightM(dbhCm);            // Eq. 11
+    g.crownLength = stand::crownLengthM(g.height);   // Eq. 12
+    g.crownMass = stand::crownMassKg(dbhCm);         // Eq. 13
+    return g;
+}
+
+double Stem::diameterAt(double z) const {
+    // Linear taper through the DBH at 1.3 m to the tip diameter at H_T.
+    const double tip = params_.tipDiameter;
+    return tip + (geometry_.dbh - tip) * (geometry_.height - z) / (geometry_.height - kBreastHeight);
+}
+
+Stem::Stem(const StemGeometry& g, const StemParams& p, const Vec3& foot, StemFoot support)
+    : geometry_(g), params_(p), support_(support), length_(0), footRest_(Quat::Identity()),
+      root_(p.root, p.bending.reading) {
+    sylva::dem::validate(p);
+    validate(g, p);
+    const std::size_t n = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(g.height / p.nodeSpacing - 1e-9)));
+    length_ = g.height / n;
+
+    position.resize(n + 1);
+    velocity.assign(n + 1, Vec3::Zero());
+    angularVelocity.assign(n + 1, Vec3::Zero());
+    orientation.assign(n + 1, Quat::Identity());
+    mass_.assign(n + 1, 0.0);
+    inertia_.assign(n + 1, 0.0);
+    std::vector<double> diameter(n + 1);
+    for (std::size_t i = 0; i <= n; ++i) {
+        position[i] = foot + Vec3(0, 0, restHeight(i));
+        diameter[i] = diameterAt(restHeight(i));
+    }
+
+    const double shearModulus = p.bending.moe / (2 * (1 + p.poisson));
+    for (std::size_t c = 0; c < n; ++c) {
+        const double da = diameter[c], db = diameter[c + 1];
+        // The cone's segment (a frustum), half on each node.
+        const double segmentMass = p.density * kPi * length_ * (da * da + da * db + db * db) / 12;
+        mass_[c] += 0.5 * segmentMass;
+        mass_[c + 1] += 0.5 * segmentMass;
+
+        const double dCon = 0.5 * (da + db);  // mean diameter between the nodes
+        const double area = kPi * dCon * dCon / 4;
+        const double polar = kPi * std::pow(dCon, 4) / 32;
+        connections_.push_back(Connection{dCon, p.bending.moe * area / length_, shearModulus * area / length_,
+                                          shearModulus * polar / length_,
+                                          BendingLaw(bendingCoefficients(p.bending, dCon, length_), p.bending.reading)});
+    }
+
+    // Crown: m_C spread equally over the nodes within L_C of the top (the top node at least).
+    std::size_t crownNodes = 0;
+    const auto inCrown = [&](std::size_t i) { return g.height - restHeight(i) <= g.crownLength + 1e-9 * g.height; };
+    for (std::size_t i = 0; i <= n; ++i) crownNodes += inCrown(i) ? 1 : 0;
+    for (std::size_t i = 0; i <= n; ++i)
+        if (inCrown(i)) mass_[i] += g.crownMass / crownNodes;
+
+    for (std::size_t i = 0; i <= n; ++i) {
+        const double share = (i == 0 || i == n) ? 0.5 * length_ : length_;
+        inertia_[i] = mass_[i] * (diameter[i] * diameter[i] / 16 + share * share / 12);
+    }
+}
+
+void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque, double dt) {
+    double stored = 0;
+    for (std::size_t c = 0; c < connections_.size(); ++c) {
+        Connection& k = connections_[c];
+        if (k.bending.broken()) continue;
+        const std::size_t a = c, b = c + 1;
+        // Relative rotation of b with respect to a. Its components are the same in a's frame, b's
+        // frame and the frame halfway between them, which is the connection's frame.
+        const Vec3 theta = rotationVector(orientation[a].conjugate() * orientation[b]);
+        const Quat frame = orientation[a] * halfTurn(theta);
+        const Vec3 chord = position[b] - position[a];
+        const Vec3 stretch = frame.conjugate() * chord - Vec3(0, 0, length_);  // shear x, y; axial z
+
+        const Vec2 bend = theta.head<2>();
+        const HingeWork w = k.bending.rotate(bend - k.bendingAngle);
+        k.bendingAngle = bend;
+        ledger.bendingPlasticity += w.dissipated;
+        ledger.unloadingGain += w.created;
+        const double linear = 0.5 * (k.shear * stretch.head<2>().squaredNorm() + k.axial * stretch.z() * stretch.z() +
+                                     k.twist * theta.z() * theta.z());
+        if (k.bending.broken()) {
+            ledger.rupture += w.released + linear;  // M_Rupt reached: resistance lost along all axes
+            continue;
+        }
+        stored += linear + k.bending.storedEnergy();
+
+        const Vec3 rate = frame.conjugate() * (angularVelocity[b] - angularVelocity[a]);
+        const Vec2 damping = k.bending.dampingMoment(rate.head<2>());  // Eqs. 7-8
+        ledger.bendingDamping += damping.dot(rate.head<2>()) * dt;
+
+        // Spring forces act at the connection's middle: on a the force f and, with the lever half
+        // the chord, the torque chord/2 x f; on b the opposite force at the same point.
+        const Vec3 f = frame * Vec3(k.shear * stretch.x(), k.shear * stretch.y(), k.axial * stretch.z());
+        const Vec2& mb = k.bending.moment();
+        const Vec3 moment = frame * Vec3(mb.x() + damping.x(), mb.y() + damping.y(), k.twist * theta.z());
+        const Vec3 lever = 0.5 * chord.cross(f);
+        force[a] += f;
+        force[b] -= f;
+        torque[a] += lever + moment;
+        torque[b] += lever - moment;
+    }
+    if (support_ == StemFoot::RootSpring) {
+        const Vec3 theta = rotationVector(footRest_.conjugate() * orientation[0]);
+        ledger.rootPlasticity += root_.rotate(theta - rootAngle_);  // Eqs. 9-10
+        rootAngle_ = theta;
+        torque[0] -= footRest_ * halfTurn(theta) * root_.moment();
+        stored += root_.storedEnergy();
+    }
+    elasticEnergy_ = stored;
+}
+
+double Stem::kineticEnergy() const {
+    double e = 0;
+    for (std::size_t i = 0; i < nodeCount(); ++i)
+        e += 0.5 * (mass_[i] * velocity[i].squaredNorm() + inertia_[i] * angularVelocity[i].squaredNorm());
+    return e;
+}
+
+double Stem::stableTimeStep() const {
+    const auto invMass = [&](std::size_t i) { return translates(i) ? 1 / mass_[i] : 0.0; };
+    const auto invInertia = [&](std::size_t i) { return rotates(i) ? 1 / inertia_[i] : 0.0; };
+    // Shear acts at the connection's middle, half a length from each node: it turns the node too.
+    const auto invShear = [&](std::size_t i) { return invMass(i) + 0.25 * length_ * length_ * invInertia(i); };
+    // Row i of the mass-normalised stiffness matrix of a spring k between i and j sums to
+    // k (1/m_i + 1/sqrt(m_i m_j)): Gershgorin's bound of the largest eigenvalue.
+    const auto row = [](double inv, double invOther) { return inv + std::sqrt(inv * invOther); };
+    double dt = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < nodeCount(); ++i) {
+        if (!translates(i) && !rotates(i)) continue;
+        StableStep s;
+        for (std::size_t c = (i > 0 ? i - 1 : 0); c <= i && c < connections_.size(); ++c) {
+            const Connection& k = connections_[c];
+            if (k.bending.broken()) continue;
+            const std::size_t j = (c == i) ? i + 1 : i - 1;
+            const HingeCoefficients& h = k.bending.coefficients();
+            s.add(k.axial, 0, row(invMass(i), invMass(j)));
+            s.add(k.shear, 0, row(invShear(i), invShear(j)));
+            s.add(h.elastic, h.viscosity, row(invInertia(i), invInertia(j)));  // K_Elast: the stiffest branch
+            s.add(k.twist, 0, row(invInertia(i), invInertia(j)));
+        }
+        if (i == 0 && support_ == StemFoot::RootSpring) s.add(root_.stiffness(), 0, invInertia(0));
+        dt = std::min(dt, s.critical());
+    }
+    return dt;
+}
+
+}  // namespace sylva::dem

@@ -1,0 +1,70 @@
+#include "libdem/StemStepper.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include "libdem/SimulationError.hpp"
+
+namespace sylva::dem {
+
+StemStepper::StemStepper(const Vec3& gravity, double relaxationRate)
+    : gravity_(gravity), relaxationRate_(relaxationRate) {}
+
+StemEnergy StemStepper::step(Stem& stem, double dt, const StemLoads& loads) {
+    const std::size_t n = stem.nodeCount();
+    const bool hasForce = !loads.force.empty(), hasTorque = !loads.torque.empty();
+    if ((hasForce && loads.force.size() != n) || (hasTorque && loads.torque.size() != n))
+        throw std::invalid_argument("StemLoads must be empty or sized to the stem's " + std::to_string(n) + " nodes");
+    force_.assign(n, Vec3::Zero());
+    torque_.assign(n, Vec3::Zero());
+    const StemLedger before = stem.ledger;
+    stem.updateConnections(force_, torque_, dt);
+
+    StemEnergy e;
+    e.elastic = stem.elasticEnergy();
+    const std::vector<double>& mass = stem.mass();
+    const std::vector<double>& inertia = stem.inertia();
+    StemLedger& ledger = stem.ledger;
+    const double rate = relaxationRate_;
+    for (std::size_t i = 0; i < n; ++i) {
+        e.potential -= mass[i] * gravity_.dot(stem.position[i]);
+        if (stem.translates(i)) {
+            Vec3& v = stem.velocity[i];
+            Vec3 f = force_[i] + mass[i] * gravity_ - rate * mass[i] * v;
+            if (hasForce) f += loads.force[i];
+            // Leapfrog: v(t - dt/2) -> v(t + dt/2); the kinetic energy at t from their mean.
+            const Vec3 before = v;
+            v += dt / mass[i] * f;
+            e.kinetic += 0.125 * mass[i] * (before + v).squaredNorm();
+            const Vec3 dx = dt * v;
+            if (hasForce) ledger.externalWork += loads.force[i].dot(dx);
+            ledger.relaxation += rate * mass[i] * before.dot(dx);
+            stem.position[i] += dx;
+        }
+        if (stem.rotates(i)) {
+            Vec3& w = stem.angularVelocity[i];
+            Vec3 t = torque_[i] - rate * inertia[i] * w;
+            if (hasTorque) t += loads.torque[i];
+            const Vec3 before = w;
+            w += dt / inertia[i] * t;  // isotropic inertia: no gyroscopic term
+            e.kinetic += 0.125 * inertia[i] * (before + w).squaredNorm();
+            const Vec3 turn = dt * w;
+            if (hasTorque) ledger.externalWork += loads.torque[i].dot(turn);
+            ledger.relaxation += rate * inertia[i] * before.dot(turn);
+            const double angle = turn.norm();
+            if (angle > 0)
+                stem.orientation[i] = (Quat(Eigen::AngleAxisd(angle, turn / angle)) * stem.orientation[i]).normalized();
+        }
+    }
+    const StemLedger& after = ledger;
+    e.netLoss = after.bendingPlasticity + after.rootPlasticity + after.rupture - after.unloadingGain +
+                0.5 * (before.bendingDamping + after.bendingDamping + before.relaxation + after.relaxation -
+                       before.externalWork - after.externalWork);
+    for (std::size_t i = 0; i < n; ++i)
+        if (!stem.position[i].allFinite() || !stem.velocity[i].allFinite() || !stem.angularVelocity[i].allFinite())
+            throw SimulationError("stem node " + std::to_string(i) + " became NaN (time step " + std::to_string(dt) +
+                                  " s; stable limit " + std::to_string(stem.stableTimeStep()) + " s)");
+    return e;
+}
+
+}  // namespace sylva::dem

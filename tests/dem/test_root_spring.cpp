@@ -1,0 +1,65 @@
+// The root spring of single trees (Eqs. 9-10): elastic with K_Root up to M_a, perfectly plastic at
+// M_a, elastic unloading, plastic work M_a times the plastic rotation; the twist held elastically.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "libdem/RootSpring.hpp"
+
+using namespace sylva::dem;
+
+namespace {
+// Linear pieces split exactly at M_a: the closed form holds to rounding (1e-9 of M_a).
+constexpr double kTol = 1e-9 * 200e3;
+}  // namespace
+
+TEST(RootSpring, ElasticThenPerfectlyPlasticThenElasticUnloading) {
+    const RootSpringParams p;  // K_Root = 7.5e6 N m/rad, M_a = 200e3 N m (model-notes.md)
+    RootSpring root(p, BendingReading::Isotropic);
+    const double thetaA = p.yieldMoment / p.stiffness;  // 26.7 mrad
+    const int n = 100;
+    double theta = 0, dissipated = 0;
+    for (int i = 0; i < n; ++i) {  // up to 3 theta_a
+        const double d = 3 * thetaA / n;
+        dissipated += root.rotate(Eigen::Vector3d(0, d, 0));
+        theta += d;
+        const double expected = std::min(p.stiffness * theta, p.yieldMoment);
+        ASSERT_NEAR(root.moment().y(), expected, kTol) << "theta = " << theta;
+        ASSERT_NEAR(root.moment().x(), 0.0, kTol);
+    }
+    EXPECT_NEAR(dissipated, p.yieldMoment * 2 * thetaA, 1e-9 * p.yieldMoment * thetaA);
+    EXPECT_NEAR(root.storedEnergy(), 0.5 * p.yieldMoment * thetaA, 1e-9 * p.yieldMoment * thetaA);
+
+    // Unloading with K_Root through zero (residual rotation 2 theta_a) down to -M_a, then the plateau.
+    for (int i = 0; i < n; ++i) {
+        const double d = -3 * thetaA / n;
+        dissipated += root.rotate(Eigen::Vector3d(0, d, 0));
+        theta += d;
+        const double expected = std::max(p.yieldMoment - p.stiffness * (3 * thetaA - theta), -p.yieldMoment);
+        ASSERT_NEAR(root.moment().y(), expected, kTol) << "theta = " << theta;
+    }
+    // 2 theta_a elastic swing, then theta_a of reversed plastic rotation.
+    EXPECT_NEAR(dissipated, p.yieldMoment * 3 * thetaA, 1e-9 * p.yieldMoment * thetaA);
+}
+
+TEST(RootSpring, TwistIsElasticWithKRoot) {
+    const RootSpringParams p;
+    RootSpring root(p, BendingReading::Isotropic);
+    const double twist = 0.2;  // far beyond M_a / K_Root: no limit on the twist
+    EXPECT_EQ(root.rotate(Eigen::Vector3d(0, 0, twist)), 0.0);
+    EXPECT_NEAR(root.moment().z(), p.stiffness * twist, 1e-9 * p.stiffness * twist);
+    EXPECT_NEAR(root.storedEnergy(), 0.5 * p.stiffness * twist * twist, 1e-9 * p.stiffness * twist * twist);
+}
+
+// M_Root limited to M_a: on the moment vector (isotropic) or per axis, where a diagonal rotation
+// holds sqrt(2) M_a.
+TEST(RootSpring, DiagonalLimitDependsOnTheReading) {
+    const RootSpringParams p;
+    const Eigen::Vector3d diagonal = Eigen::Vector3d(1, 1, 0).normalized() * 0.1;
+    RootSpring iso(p, BendingReading::Isotropic), perAxis(p, BendingReading::PerAxis);
+    iso.rotate(diagonal);
+    perAxis.rotate(diagonal);
+    EXPECT_NEAR(iso.moment().head<2>().norm(), p.yieldMoment, kTol);
+    EXPECT_NEAR(iso.moment().x(), iso.moment().y(), kTol);
+    EXPECT_NEAR(perAxis.moment().head<2>().norm(), std::sqrt(2.0) * p.yieldMoment, kTol);
+}

@@ -1,0 +1,141 @@
+// Building a stem: beech allometry (Eqs. 11-13), the truncated cone's mass and centre of mass
+// against closed forms, the crown mass on the nodes within L_C of the top, connection geometry,
+// and the InputErrors for impossible stems.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "libdem/Stem.hpp"
+#include "libstand/InputError.hpp"
+
+using sylva::InputError;
+using namespace sylva::dem;
+
+namespace {
+const double kPi = std::acos(-1.0);
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+// Message of the InputError that building this stem raises.
+std::string buildError(const StemGeometry& g, const StemParams& p) {
+    try {
+        Stem(g, p, Vec3::Zero(), StemFoot::Clamped);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    ADD_FAILURE() << "the stem was accepted";
+    return "";
+}
+}  // namespace
+
+TEST(StemBuild, BeechAllometryOfA20cmStem) {
+    const StemGeometry g = beechStem(20);
+    // model-notes.md: H_T(0.20 m) ~ 13.9 m (Eq. 11 with D in m), m_C(20 cm) ~ 40 kg (Eq. 13 with D in cm).
+    EXPECT_NEAR(g.height, 1.3 + 73.805 * 0.2 - 54.734 * 0.04, 1e-9);
+    EXPECT_NEAR(g.height, 13.9, 0.05);
+    EXPECT_NEAR(g.crownLength, 0.40642 * g.height, 1e-9);  // Eq. 12
+    EXPECT_NEAR(g.crownMass, 0.0031 * std::pow(20.0, 3.161), 1e-9);
+    EXPECT_NEAR(g.crownMass, 40, 1.0);
+    EXPECT_DOUBLE_EQ(g.dbh, 0.2);
+    EXPECT_THROW(beechStem(0), InputError);
+    EXPECT_THROW(beechStem(-3), InputError);
+}
+
+// Mass, centre of mass and taper against the closed forms of a truncated cone of diameters D0 at
+// the foot and Dt at the top, plus the crown mass spread uniformly over the crown's nodes.
+TEST(StemBuild, NodesCarryTheTruncatedConeAndTheCrown) {
+    const StemGeometry g = beechStem(25);
+    StemParams p;
+    p.nodeSpacing = 0.4;
+    const Stem stem(g, p, Vec3(3, -2, 7), StemFoot::Clamped);
+    const double h = g.height, dt = p.tipDiameter;
+    const double d0 = dt + (g.dbh - dt) * h / (h - 1.3);  // the taper through the DBH at 1.3 m
+    EXPECT_NEAR(stem.diameterAt(0), d0, 1e-12);
+    EXPECT_NEAR(stem.diameterAt(1.3), g.dbh, 1e-12);
+    EXPECT_NEAR(stem.diameterAt(h), dt, 1e-12);
+
+    const std::size_t n = stem.connectionCount();
+    EXPECT_EQ(n, static_cast<std::size_t>(std::ceil(h / 0.4)));
+    EXPECT_EQ(stem.nodeCount(), n + 1);
+    EXPECT_NEAR(stem.connectionLength(), h / n, 1e-12);
+    EXPECT_LE(stem.connectionLength(), p.nodeSpacing);
+
+    const double woodMass = p.density * kPi * h * (d0 * d0 + d0 * dt + dt * dt) / 12;
+    // Centre of mass height of a frustum: h (D0^2 + 2 D0 Dt + 3 Dt^2) / (4 (D0^2 + D0 Dt + Dt^2)).
+    const double woodCentre = h * (d0 * d0 + 2 * d0 * dt + 3 * dt * dt) / (4 * (d0 * d0 + d0 * dt + dt * dt));
+    double total = 0, moment = 0, crown = 0;
+    int crownNodes = 0;
+    for (std::size_t i = 0; i < stem.nodeCount(); ++i) {
+        EXPECT_NEAR((stem.position[i] - Vec3(3, -2, 7 + i * h / n)).norm(), 0.0, 1e-12);
+        total += stem.mass()[i];
+        moment += stem.mass()[i] * (stem.position[i].z() - 7);
+        if (h - i * h / n <= g.crownLength) ++crownNodes;
+    }
+    for (std::size_t i = 0; i < stem.nodeCount(); ++i)
+        if (h - i * h / n <= g.crownLength) crown += g.crownMass / crownNodes;
+    EXPECT_NEAR(total, woodMass + g.crownMass, 1e-9 * total);
+    // Lumping each frustum on its end nodes moves the wood's centre by O(l^2 / h); the crown's
+    // nodes are equally spaced over its length, so its centre sits at the middle of their span.
+    double crownCentre = 0;
+    for (std::size_t i = 0; i < stem.nodeCount(); ++i)
+        if (h - i * h / n <= g.crownLength) crownCentre += (i * h / n) / crownNodes;
+    const double expectedCentre = (woodMass * woodCentre + g.crownMass * crownCentre) / (woodMass + g.crownMass);
+    const double l = h / n;
+    EXPECT_NEAR(moment / total, expectedCentre, l * l / h);
+    EXPECT_NEAR(crown, g.crownMass, 1e-12);
+
+    for (std::size_t c = 0; c < n; ++c) {
+        EXPECT_NEAR(stem.connectionDiameter(c), stem.diameterAt((c + 0.5) * l), 1e-12);  // D_con at the middle
+        EXPECT_EQ(stem.bending(c).reading(), BendingReading::Isotropic);
+    }
+    p.bending.reading = BendingReading::PerAxis;
+    const Stem perAxis(g, p, Vec3::Zero(), StemFoot::RootSpring);
+    for (std::size_t c = 0; c < perAxis.connectionCount(); ++c)
+        EXPECT_EQ(perAxis.bending(c).reading(), BendingReading::PerAxis);
+}
+
+TEST(StemBuild, ImpossibleStemsAreInputErrors) {
+    StemGeometry g = beechStem(20);
+    StemParams p;
+    {
+        StemParams q = p;
+        q.nodeSpacing = 0;
+        EXPECT_TRUE(contains(buildError(g, q), "node spacing"));
+    }
+    {
+        StemParams q = p;
+        q.bending.sigmaRupt = 30e6;
+        EXPECT_TRUE(contains(buildError(g, q), "sigma_Rupt"));
+    }
+    {
+        StemParams q = p;
+        q.bending.eUnld = 1e9;  // below E_Plast: the plastic branch would create energy
+        EXPECT_TRUE(contains(buildError(g, q), "E_Unld"));
+    }
+    {
+        StemParams q = p;
+        q.tipDiameter = 0.3;
+        EXPECT_TRUE(contains(buildError(g, q), "tip diameter"));
+    }
+    {
+        StemParams q = p;
+        q.poisson = 0.5;
+        EXPECT_TRUE(contains(buildError(g, q), "Poisson"));
+    }
+    {
+        StemGeometry h = g;
+        h.height = 1.2;
+        EXPECT_TRUE(contains(buildError(h, p), "height"));
+    }
+    {
+        StemGeometry h = g;
+        h.crownLength = h.height + 1;
+        EXPECT_TRUE(contains(buildError(h, p), "crown length"));
+    }
+    {
+        StemGeometry h = g;
+        h.crownMass = NAN;
+        EXPECT_TRUE(contains(buildError(h, p), "crown mass"));
+    }
+}

@@ -22,9 +22,10 @@ std::string where(const Vec3& p) {
 
 BlockMotion::BlockMotion(const Scene& scene, const Release& start)
     : cfg_(scene.config()), soil_(scene.soil()), block_(scene.blockTemplate()),
-      law_(scene.laws().get(BodyKind::Block, BodyKind::Soil)) {
+      law_(scene.laws().get(BodyKind::Block, BodyKind::Soil)), forest_(scene) {
     block_.position = start.position;
     block_.orientation = start.orientation;
+    block_.velocity = start.velocity;
     worldCentres_.resize(block_.spheres().size());
     updateCentres();
     detectContacts();
@@ -36,9 +37,13 @@ BlockMotion::BlockMotion(const Scene& scene, const Release& start)
 }
 
 double BlockMotion::step() {
+    // detect contacts
     updateCentres();
     detectContacts();
+    forest_.detect(block_, worldCentres_, 2 * block_.velocity.norm() * lastDt_, t_);
+    // time step
     const double dt = timeStep();
+    // forces
     Vec3 force(0, 0, -block_.mass() * cfg_.gravity), torque(0, 0, 0);
     double stored = 0;
     for (auto& c : touches_) {
@@ -47,10 +52,16 @@ double BlockMotion::step() {
         torque += (c.geometry.point - block_.position).cross(f);
         stored += law_.storedEnergy(c.geometry, c.history);
     }
-    audit(force, torque, dt, stored);
+    forest_.forces(block_, dt, force, torque);
+    // integrate (the stems report their energy at the step's start), audit, and let stems the
+    // block has left fall asleep
+    forest_.integrate(dt);
+    audit(force, torque, dt, stored + forest_.budgetTerm());
     block_.advance(dt, force, torque);
     t_ += dt;
     ++steps_;
+    lastDt_ = dt;
+    forest_.sleep(block_, t_);
     if (!block_.position.allFinite() || !block_.velocity.allFinite() || !block_.angularMomentum.allFinite())
         throw SimulationError("the block's state became NaN at t = " + std::to_string(t_) + " s (time step " +
                               std::to_string(dt) + " s)");
@@ -105,14 +116,16 @@ BlockMotion::SoilTouch& BlockMotion::touch(std::uint32_t blockSphere, std::uint3
     return touches_.back();
 }
 
-// The stable step of the springs acting now, plus room for `anticipatedContacts` new ones.
-double BlockMotion::timeStep() const {
+// The stable step of the springs acting now, plus room for `anticipatedContacts` new soil ones; while
+// stems are awake, also theirs (the stiff stem step is paid only then).
+double BlockMotion::timeStep() {
     StableStep s;
     const double c = law_.dampingCoefficient();
     s.add(anticipatedStiffness_, c, block_.maxInverseMass());
     for (const auto& tc : touches_)
         s.add(law_.normalStiffness(tc.geometry), c, block_.inverseMassAlong(tc.geometry.point, tc.geometry.normal));
-    const double limit = s.critical();
+    const double stems = forest_.stableStep(block_, s);
+    const double limit = std::min(s.critical(), stems);
     const double forced = cfg_.integration.forcedDt;
     if (forced > 0) {
         if (forced > limit)
@@ -121,7 +134,7 @@ double BlockMotion::timeStep() const {
                                   " s; use a smaller step or 0 (automatic)");
         return forced;
     }
-    return cfg_.integration.safety * limit;
+    return std::min(cfg_.integration.safety * s.critical(), cfg_.integration.stemSafety * stems);
 }
 
 // Audited at t, where positions and contact springs are: the leapfrog's velocities are half a step

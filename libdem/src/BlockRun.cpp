@@ -75,8 +75,20 @@ Release drawRelease(const Scene& scene, std::uint64_t seed) {
         const double ax = rng.uniform(0, M_PI), ay = rng.uniform(0, M_PI), az = rng.uniform(0, M_PI);
         q = Eigen::AngleAxisd(az, Vec3::UnitZ()) * Eigen::AngleAxisd(ay, Vec3::UnitY()) * Eigen::AngleAxisd(ax, Vec3::UnitX());
     }
-    const double y = rel.yMax > rel.yMin ? rng.uniform(rel.yMin, rel.yMax) : rel.yMin;
     const SoilBed& soil = scene.soil();
+    if (cfg.launch.enabled) {
+        // At the tree, from upslope: the block's centre at the impact height, offset across its path.
+        const auto& l = cfg.launch;
+        const PlacedTree& t = scene.trees().tree(0);
+        const double reach = scene.blockTemplate().boundingRadius() + 0.5 * t.geometry.dbh;
+        const Vec3 p(t.foot.x() - l.distance, t.foot.y() + l.eccentricity * reach, t.foot.z() + l.impactHeight);
+        if (p.z() - scene.blockTemplate().boundingRadius() < soil.surfaceHeight(p.x(), p.y()) + 0.01)
+            throw InputError(cfg.sourceFile, 0, "block.impact_height_m = " + std::to_string(l.impactHeight) +
+                                                    " m puts the block into the ground (its bounding radius is " +
+                                                    std::to_string(scene.blockTemplate().boundingRadius()) + " m)");
+        return {p, q, Vec3(l.speed, 0, 0)};
+    }
+    const double y = rel.yMax > rel.yMin ? rng.uniform(rel.yMin, rel.yMax) : rel.yMin;
     if (rel.x < soil.xmin() || rel.x > soil.xmax() || y < soil.ymin() || y > soil.ymax())
         throw InputError(cfg.sourceFile, 0, "release point (" + std::to_string(rel.x) + ", " + std::to_string(y) +
                                                 ") is outside the terrain");
@@ -137,6 +149,7 @@ RunResult simulateBlock(const Scene& scene, int run, std::uint64_t seed, const R
     r.runoutHorizontal = (r.stop - r.release).head<2>().norm();
     r.energyLineDeg = r.runoutHorizontal > 0 ? std::atan2(r.release.z() - r.stop.z(), r.runoutHorizontal) * 180 / M_PI : 0;
     r.energy = motion.energy();
+    r.impacts = motion.forest().finish(block);
     return r;
 }
 

@@ -1,10 +1,31 @@
 #include "libdem/Scene.hpp"
 
+#include "libstand/Allometry.hpp"
 #include "libstand/InputError.hpp"
 
 namespace sylva::dem {
 
 namespace {
+stand::Forest singleTree(const SingleTreeConfig& t) {
+    stand::Tree tree;
+    tree.id = 1;
+    tree.x = t.x;
+    tree.y = t.y;
+    tree.dbhCm = t.dbhCm;
+    tree.species = "beech";
+    if (t.coppice) tree.stool = 1;
+    tree.heightM = stand::treeHeightM(t.dbhCm);
+    tree.crownLengthM = stand::crownLengthM(tree.heightM);
+    tree.crownMassKg = stand::crownMassKg(t.dbhCm);
+    return stand::Forest{{tree}};
+}
+
+stand::Forest chooseForest(const SceneConfig& c, stand::Forest given) {
+    if (c.tree.enabled) return singleTree(c.tree);
+    if (!c.forestFile.empty()) return stand::readForestCsv(c.forestFile);
+    return given;
+}
+
 std::shared_ptr<const SoilBed> buildSoil(const TerrainConfig& t) {
     if (t.profile.empty() == t.dtm.empty())
         throw InputError("the scene needs exactly one of terrain.profile or terrain.dtm");
@@ -17,7 +38,7 @@ Scene::Scene(SceneConfig config, stand::Forest forest)
     : config_(std::move(config)),
       soil_(buildSoil(config_.terrain)),
       block_(makeBlock(config_.block)),
-      forest_(config_.forestFile.empty() ? std::move(forest) : stand::readForestCsv(config_.forestFile)) {
+      forest_(chooseForest(config_, std::move(forest))) {
     // Forest runs release across the slope (Sect. 2.3.2: Y uniform in [80, 120] m) unless the scene
     // says otherwise.
     if (!forest_.trees.empty() && !config_.release.yRangeGiven) {
@@ -25,6 +46,16 @@ Scene::Scene(SceneConfig config, stand::Forest forest)
         config_.release.yMax = config_.release.forestYMax;
     }
     laws_.set(BodyKind::Block, BodyKind::Soil, std::make_shared<SoilContact>(config_.soilContact, block_.mass()));
+    if (!forest_.trees.empty()) {
+        trees_ = TreeField(forest_, *soil_);
+        laws_.set(BodyKind::Block, BodyKind::Stem, std::make_shared<BlockStemContact>(config_.stemContact));
+        laws_.set(BodyKind::Stem, BodyKind::Stem, std::make_shared<StemStemContact>(config_.stemContact));
+        // Broken pieces on the ground: the soil's spring and friction; no dashpot (alpha_cr of
+        // Eq. 16 is defined for the block), the pieces lose energy in their own bending.
+        SoilContactParams onSoil = config_.soilContact;
+        onSoil.dampingRatio = 0;
+        laws_.set(BodyKind::Stem, BodyKind::Soil, std::make_shared<SoilContact>(onSoil, 1.0));
+    }
 }
 
 }  // namespace sylva::dem

@@ -1,10 +1,11 @@
 #pragma once
-// The block's motion on the soil, one explicit step at a time:
+// The block's motion on the soil and through the forest, one explicit step at a time:
 // detect contacts -> choose the stable time step -> contact forces -> integrate -> audit energy.
 #include <cstdint>
 #include <vector>
 
 #include "libdem/BlockRun.hpp"
+#include "libdem/ForestMotion.hpp"
 
 namespace sylva::dem {
 
@@ -26,6 +27,8 @@ public:
     // Height of the block's lowest point above the macroscopic surface under its centre.
     double clearance() const;
     const EnergyBudget& energy() const { return budget_; }
+    const ForestMotion& forest() const { return forest_; }
+    ForestMotion& forest() { return forest_; }
 
 private:
     // A block sphere touching a soil sphere, with the history its law carries between steps.
@@ -40,7 +43,7 @@ private:
     void updateCentres();
     void detectContacts();
     SoilTouch& touch(std::uint32_t blockSphere, std::uint32_t soilSphere);
-    double timeStep() const;
+    double timeStep();
     void audit(const Vec3& force, const Vec3& torque, double dt, double stored);
 
     const SceneConfig& cfg_;
@@ -53,6 +56,8 @@ private:
     double anticipatedStiffness_ = 0;
     DissipationLedger ledger_;
     EnergyBudget budget_;
+    ForestMotion forest_;
+    double lastDt_ = 0;
     double t_ = 0;
     long steps_ = 0;
 };

@@ -59,6 +59,7 @@ struct RunOptions {
 struct Release {
     Vec3 position;
     Quat orientation;
+    Vec3 velocity = Vec3::Zero();
 };
 // Throws InputError if the point is outside the terrain.
 Release drawRelease(const Scene& scene, std::uint64_t seed);

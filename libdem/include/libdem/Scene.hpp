@@ -5,6 +5,7 @@
 
 #include "libdem/ContactLawTable.hpp"
 #include "libdem/SceneConfig.hpp"
+#include "libdem/TreeField.hpp"
 #include "libstand/Forest.hpp"
 
 namespace sylva::dem {
@@ -21,6 +22,7 @@ public:
     const ContactLawTable& laws() const { return laws_; }
     const stand::Forest& forest() const { return forest_; }
     bool forested() const { return !forest_.trees.empty(); }
+    const TreeField& trees() const { return trees_; }
 
 private:
     SceneConfig config_;
@@ -28,6 +30,7 @@ private:
     RigidBody block_;
     ContactLawTable laws_;
     stand::Forest forest_;
+    TreeField trees_;
 };
 
 }  // namespace sylva::dem

@@ -5,6 +5,8 @@
 
 #include "libdem/BlockShape.hpp"
 #include "libdem/SoilContact.hpp"
+#include "libdem/StemContact.hpp"
+#include "libdem/StemParams.hpp"
 #include "libdem/Terrain.hpp"
 
 namespace sylva::dem {
@@ -25,8 +27,28 @@ struct ReleaseConfig {
     bool randomOrientation = true;  // angles uniform in [0, 180 deg) about x, y, z (Sect. 2.3.2)
 };
 
+// A block launched at one tree (single-tree scenes): instead of a release from rest, the block
+// starts `distance` before the stem, its centre `impactHeight` above the ground, offset across
+// its path by eccentricity x (block radius + stem radius), moving at `speed` along +x.
+struct LaunchConfig {
+    bool enabled = false;
+    double speed = 15;          // m/s
+    double impactHeight = 1;    // m above the stem's foot
+    double eccentricity = 0;    // in [-1, 1]
+    double distance = 1.5;      // m between the block's centre and the stem's axis at the start
+};
+
+// One tree of a single-tree scene (replaces any forest file).
+struct SingleTreeConfig {
+    bool enabled = false;
+    double dbhCm = 25;
+    double x = 20, y = 10;      // m
+    bool coppice = false;       // clamped foot (a coppice stem) instead of the root spring
+};
+
 struct IntegrationConfig {
-    double safety = 0.3;        // dt = safety x stable limit
+    double safety = 0.3;        // dt = safety x stable limit of the block's springs
+    double stemSafety = 0.8;    // and at most stemSafety x the awake stems' limit (a Gershgorin bound, 1.1-2.9x below the true one)
     double forcedDt = 0;        // > 0: use this step (refused if above the stable limit)
     int anticipatedContacts = 4;  // the step stays stable for this many new contacts at once
     double energyTolerance = 0.1;  // audit: allowed relative energy imbalance before a run is refused
@@ -38,13 +60,25 @@ struct StopConfig {
     double maxTime = 300;       // s of simulated time
 };
 
+// When a stem is built into the simulation and when it is put back to sleep (BlockMotion).
+struct ForestActivity {
+    double wakeMargin = 0.1;    // m: a stem wakes when the block's bounding sphere comes this close (plus one step's travel)
+    double sleepAfter = 0.3;    // s without block contact, the block out of reach, before a stem sleeps again
+    bool allAwake = false;      // reference mode: every stem awake from the start (small forests only)
+};
+
 struct SceneConfig {
     std::string sourceFile;     // the scene file, for messages
     TerrainConfig terrain;
     std::string forestFile;     // forest CSV (sylvarock generate's, or x,y,dbh_cm[,stool]); empty: no forest
+    StemParams stem;
+    StemContactParams stemContact;
+    ForestActivity activity;
     SoilContactParams soilContact;
     BlockSpec block;
     ReleaseConfig release;
+    LaunchConfig launch;
+    SingleTreeConfig tree;
     IntegrationConfig integration;
     StopConfig stop;
     double gravity = 9.81;

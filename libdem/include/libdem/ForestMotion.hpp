@@ -1,0 +1,128 @@
+#pragma once
+// The forest's part of a block run. Stems are plain data (TreeField) until the block comes near:
+// then a stem is built into the simulation (woken), integrated while the block can touch it, and
+// put back to sleep once the block has left it (its deformed or broken shape is kept). The stiff
+// stem time step is only paid while some stem is awake.
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "libdem/BlockRun.hpp"
+#include "libdem/StableStep.hpp"
+#include "libdem/StemStepper.hpp"
+
+namespace sylva::dem {
+
+// Where the forest's energy went, J (for the run's energy budget).
+struct ForestLedger {
+    double bendingPlasticity = 0, bendingDamping = 0, rootPlasticity = 0, rupture = 0;
+    double unloadingGain = 0;   // energy Fig. 3 creates at a connection's first yield (a source)
+    double contactFriction = 0; // block/stem, stem/stem and stem/soil sliding
+    double frozen = 0;          // kinetic energy of stems put to sleep while still vibrating
+};
+
+class ForestMotion {
+public:
+    explicit ForestMotion(const Scene& scene);
+
+    bool empty() const { return trees_.size() == 0; }
+    std::size_t awakeCount() const { return awake_.size(); }
+
+    // Wakes the stems the block is about to reach, then finds the block/stem, stem/stem and
+    // stem/soil contacts (histories carried, also when a contact slides along a stem).
+    void detect(const RigidBody& block, const std::vector<Vec3>& blockCentres, double reachAhead, double t);
+    // The largest stable step of the awake stems and their contacts (infinity if none); the block's
+    // side of the block/stem springs is added to `blockStep`.
+    double stableStep(const RigidBody& block, StableStep& blockStep) const;
+    // Contact forces for a step dt: the block's share is added to force and torque (about its centre).
+    void forces(const RigidBody& block, double dt, Vec3& force, Vec3& torque);
+    // Advances the awake stems by dt (connections, root springs, gravity, contact loads).
+    void integrate(double dt);
+    // Puts to sleep the stems the block has left; closes their impact records.
+    void sleep(const RigidBody& block, double t);
+    // Closes every open impact record and returns all of them, in the order they began.
+    std::vector<TreeImpact> finish(const RigidBody& block);
+
+    // Energy of the forest at the last integrate(): stems' kinetic + elastic + potential, springs
+    // of the forest's contacts, plus what left it (ledger); minus the potential energy the stems
+    // had when they were woken (they enter the budget then).
+    double budgetTerm() const { return budget_; }
+    ForestLedger ledger() const;
+
+private:
+    struct AwakeStem {
+        std::uint32_t tree;
+        Stem stem;
+        StemLoads loads;
+        double stableStep;
+        double wokenAt;
+        double lastBlockContact;  // time of the last block contact (or of waking)
+        bool touched;             // by the block, since it woke
+        bool broken;              // some connection broken (the step limit was recomputed)
+        mutable std::vector<double> contactOmega2;  // per node, from the contacts' springs (stableStep)
+    };
+    // A block sphere against a stem (the deepest of its connections this step).
+    struct BlockStemTouch {
+        std::uint32_t blockSphere, tree;
+        std::size_t connection;
+        double t;  // where along the connection
+        ContactHistory history;
+        ContactGeometry geometry;
+        bool touching;
+    };
+    struct StemStemTouch {
+        std::uint32_t treeA, treeB;
+        std::size_t connectionA, connectionB;
+        double s, t;
+        ContactHistory history;
+        ContactGeometry geometry;
+        bool touching, ignored;  // ignored: connections fused at rest (the bases of a stool's stems)
+    };
+    struct StemSoilTouch {
+        std::uint32_t tree, node, soil;
+        ContactHistory history;
+        ContactGeometry geometry;
+        bool touching;
+    };
+    struct OpenImpact {
+        TreeImpact record;
+        bool open;
+    };
+
+    void wake(std::uint32_t tree, double t);
+    AwakeStem* awake(std::uint32_t tree);
+    void wakeNeighbours();
+    void detectBlockStem(const RigidBody& block, const std::vector<Vec3>& centres);
+    void detectStemStem();
+    void detectStemSoil();
+    void openImpact(const RigidBody& block, const BlockStemTouch& touch, double t);
+    void closeImpact(std::size_t index, const RigidBody& block);
+    static Vec3 connectionVelocity(const Stem& s, std::size_t c, double t, const Vec3& point);
+    static void applyToConnection(AwakeStem& a, std::size_t c, double t, const Vec3& point, const Vec3& force);
+
+    const SceneConfig& cfg_;
+    const TreeField& trees_;
+    const SoilBed& soil_;
+    const ContactLaw* blockStemLaw_ = nullptr;
+    const ContactLaw* stemStemLaw_ = nullptr;
+    const ContactLaw* stemSoilLaw_ = nullptr;
+    StemStepper stepper_;
+    std::vector<AwakeStem> awake_;
+    std::unordered_map<std::uint32_t, Stem> asleep_;  // stems woken before, kept as they were left
+    std::vector<BlockStemTouch> blockTouches_;
+    std::vector<StemStemTouch> stemTouches_;
+    std::vector<StemSoilTouch> soilTouches_;
+    std::vector<OpenImpact> impacts_;
+    std::unordered_map<std::uint32_t, std::size_t> openImpactOf_;  // tree -> index in impacts_
+    std::vector<std::uint32_t> nearTrees_, nearSoil_;
+    DissipationLedger contactLedger_;
+    ForestLedger slept_;        // ledgers of stems that went to sleep
+    double frozenElastic_ = 0, frozenPotential_ = 0, injected_ = 0;
+    double now_ = 0, lastDt_ = 0;
+    static constexpr int kNeighbourCheckInterval = 10;
+    int sinceNeighbourCheck_ = 0;
+
+    double budget_ = 0;
+};
+
+}  // namespace sylva::dem

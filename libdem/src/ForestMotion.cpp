@@ -1,0 +1,516 @@
+#include "libdem/ForestMotion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "libdem/SegmentGeometry.hpp"
+
+namespace sylva::dem {
+
+namespace {
+
+double potentialEnergy(const Stem& s, double g) {
+    double e = 0;
+    for (std::size_t i = 0; i < s.nodeCount(); ++i) e += s.mass()[i] * g * s.position[i].z();
+    return e;
+}
+
+bool anyBroken(const Stem& s) {
+    for (std::size_t c = 0; c < s.connectionCount(); ++c)
+        if (s.broken(c)) return true;
+    return false;
+}
+
+double horizontalDistance(const Vec3& a, const Vec3& b) { return (a - b).head<2>().norm(); }
+
+// History of a contact first seen at this overlap. Stems are checked against each other only
+// while awake, so a stem can be woken into a neighbour that already bent into it; the part of the
+// overlap no step's motion could explain (kMaxOnsetOverlap) becomes an offset the spring starts from.
+constexpr double kMaxOnsetOverlap = 2e-3;  // m: 40 m/s x 5e-5 s, the most one stem step brings
+ContactHistory startedAt(double overlap) {
+    ContactHistory h;
+    h.overlapOffset = std::max(0.0, overlap - kMaxOnsetOverlap);
+    return h;
+}
+
+// Radius of a standing stem at its foot (the cone through the DBH at 1.3 m; Stem::diameterAt).
+double baseRadius(const PlacedTree& p) {
+    const double h = p.geometry.height;
+    return h > 1.3 ? 0.5 * p.geometry.dbh * h / (h - 1.3) : 0.5 * p.geometry.dbh;
+}
+
+// Stems of one stool stand so close that their cones meet near the foot: the connections of two
+// stems that overlap in the stems' rest shape are one fused stump, not a contact.
+bool fusedAtRest(const PlacedTree& a, std::size_t ca, const Stem& sa, const PlacedTree& b, std::size_t cb, const Stem& sb) {
+    const double la = sa.connectionLength(), lb = sb.connectionLength();
+    const double za0 = a.foot.z() + ca * la, za1 = za0 + la, zb0 = b.foot.z() + cb * lb, zb1 = zb0 + lb;
+    if (za1 < zb0 || zb1 < za0) return false;
+    return horizontalDistance(a.foot, b.foot) < 0.5 * (sa.connectionDiameter(ca) + sb.connectionDiameter(cb));
+}
+
+// What a spring along n at `point` sees of node i: 1/m + |r x n|^2 / I (r from the node's centre).
+double nodeInverseMass(const Stem& s, std::size_t i, const Vec3& point, const Vec3& n) {
+    double inv = 0;
+    if (s.translates(i)) inv += 1 / s.mass()[i];
+    if (s.rotates(i)) inv += (point - s.position[i]).cross(n).squaredNorm() / s.inertia()[i];
+    return inv;
+}
+
+
+}  // namespace
+
+ForestMotion::ForestMotion(const Scene& scene)
+    : cfg_(scene.config()), trees_(scene.trees()), soil_(scene.soil()), stepper_(Vec3(0, 0, -scene.config().gravity)) {
+    if (empty()) return;
+    blockStemLaw_ = &scene.laws().get(BodyKind::Block, BodyKind::Stem);
+    stemStemLaw_ = &scene.laws().get(BodyKind::Stem, BodyKind::Stem);
+    stemSoilLaw_ = &scene.laws().get(BodyKind::Stem, BodyKind::Soil);
+}
+
+ForestMotion::AwakeStem* ForestMotion::awake(std::uint32_t tree) {
+    for (auto& a : awake_)
+        if (a.tree == tree) return &a;
+    return nullptr;
+}
+
+void ForestMotion::wake(std::uint32_t tree, double t) {
+    const PlacedTree& p = trees_.tree(tree);
+    auto slept = asleep_.find(tree);
+    Stem stem = slept != asleep_.end() ? std::move(slept->second) : Stem(p.geometry, cfg_.stem, p.foot, p.support);
+    if (slept != asleep_.end()) {
+        // Its frozen energy and its ledger go back with it.
+        frozenElastic_ -= stem.elasticEnergy();
+        frozenPotential_ -= potentialEnergy(stem, cfg_.gravity);
+        slept_.bendingPlasticity -= stem.ledger.bendingPlasticity;
+        slept_.bendingDamping -= stem.ledger.bendingDamping;
+        slept_.rootPlasticity -= stem.ledger.rootPlasticity;
+        slept_.rupture -= stem.ledger.rupture;
+        slept_.unloadingGain -= stem.ledger.unloadingGain;
+        asleep_.erase(slept);
+    } else {
+        injected_ += potentialEnergy(stem, cfg_.gravity);  // the stem enters the energy budget
+    }
+    const double step = stem.stableTimeStep();
+    const bool broken = anyBroken(stem);
+    awake_.push_back(AwakeStem{tree, std::move(stem), {}, step, t, t, false, broken});
+}
+
+void ForestMotion::detect(const RigidBody& block, const std::vector<Vec3>& centres, double reachAhead, double t) {
+    if (empty()) return;
+    now_ = t;
+    if (cfg_.activity.allAwake) {
+        if (awake_.empty() && asleep_.empty())
+            for (std::uint32_t i = 0; i < trees_.size(); ++i) wake(i, t);
+    } else {
+        // Wake what the block's bounding sphere can reach before the next detection: its travel
+        // over the next steps plus a margin, to the stem's surface (the base is the widest part).
+        const double reach = block.boundingRadius() + cfg_.activity.wakeMargin + reachAhead;
+        nearTrees_.clear();
+        trees_.near(block.position.x(), block.position.y(), reach + 0.75 * trees_.thickest(), nearTrees_);
+        for (std::uint32_t i : nearTrees_) {
+            const PlacedTree& p = trees_.tree(i);
+            if (horizontalDistance(block.position, p.foot) > reach + baseRadius(p)) continue;
+            if (block.position.z() - block.boundingRadius() > p.foot.z() + p.geometry.height) continue;  // flying over
+            if (!awake(i)) wake(i, t);
+        }
+    }
+    wakeNeighbours();
+    detectBlockStem(block, centres);
+    for (auto& touch : blockTouches_)
+        if (touch.touching) {
+            AwakeStem* a = awake(touch.tree);
+            a->lastBlockContact = t;
+            if (!openImpactOf_.count(touch.tree)) openImpact(block, touch, t);
+            a->touched = true;
+        }
+    detectStemStem();
+    detectStemSoil();
+}
+
+// A point near connection c, at parameter t of its axis: it moves with the axis point
+// q = (1 - t) p_c + t p_c+1 and turns with the nodes' interpolated spin about q. Forces are shared
+// the same way (applyToConnection), so the contact forces do exactly the work their springs store.
+// A bent or broken stem can reach a neighbour the block never came near: wake the stems that
+// the displaced nodes of awake stems could touch before the next check. Checked every few steps,
+// with the nodes' travel over that time added to the margin.
+void ForestMotion::wakeNeighbours() {
+    if (++sinceNeighbourCheck_ < kNeighbourCheckInterval) return;
+    sinceNeighbourCheck_ = 0;
+    const std::size_t n = awake_.size();
+    for (std::size_t k = 0; k < n; ++k) {
+        const Stem& s = awake_[k].stem;
+        const PlacedTree& own = trees_.tree(awake_[k].tree);
+        for (std::size_t i = 1; i < s.nodeCount(); ++i) {
+            const Vec3& p = s.position[i];
+            if (horizontalDistance(p, own.foot) < 0.05) continue;  // still standing where it grew
+            const double r = 0.5 * s.diameterAt(s.restHeight(i));
+            const double reach = r + cfg_.activity.wakeMargin + s.velocity[i].norm() * lastDt_ * 2 * kNeighbourCheckInterval;
+            nearTrees_.clear();
+            trees_.near(p.x(), p.y(), reach + 0.75 * trees_.thickest(), nearTrees_);
+            for (std::uint32_t j : nearTrees_) {
+                const PlacedTree& other = trees_.tree(j);
+                if (j == awake_[k].tree || awake(j)) continue;
+                if (horizontalDistance(p, other.foot) > reach + baseRadius(other)) continue;
+                if (p.z() > other.foot.z() + other.geometry.height + reach) continue;
+                wake(j, now_);
+            }
+        }
+    }
+}
+
+Vec3 ForestMotion::connectionVelocity(const Stem& s, std::size_t c, double t, const Vec3& point) {
+    const Vec3 q = (1 - t) * s.position[c] + t * s.position[c + 1];
+    const Vec3 spin = (1 - t) * s.angularVelocity[c] + t * s.angularVelocity[c + 1];
+    return (1 - t) * s.velocity[c] + t * s.velocity[c + 1] + spin.cross(point - q);
+}
+
+void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec3>& centres) {
+    for (auto& touch : blockTouches_) touch.touching = false;
+    const Vec3 omega = block.angularVelocity();
+    for (const auto& a : awake_) {
+        const Stem& s = a.stem;
+        for (std::size_t c = 0; c < s.connectionCount(); ++c) {
+            if (s.broken(c)) continue;
+            const Vec3& a0 = s.position[c];
+            const Vec3& a1 = s.position[c + 1];
+            const double r = 0.5 * s.connectionDiameter(c);
+            const double tc = closestOnSegment(block.position, a0, a1);
+            if ((block.position - (a0 + tc * (a1 - a0))).norm() > block.boundingRadius() + r) continue;
+            for (std::uint32_t i = 0; i < centres.size(); ++i) {
+                const double rb = block.spheres()[i].radius;
+                const double t = closestOnSegment(centres[i], a0, a1);
+                const Vec3 q = a0 + t * (a1 - a0);
+                const Vec3 d = centres[i] - q;
+                const double dist = d.norm();
+                const double overlap = rb + r - dist;
+                if (overlap <= 0 || dist == 0) continue;
+                // One contact per (block sphere, stem): the deepest connection; its history moves
+                // with it from one connection to the next.
+                BlockStemTouch* touch = nullptr;
+                for (auto& bt : blockTouches_)
+                    if (bt.blockSphere == i && bt.tree == a.tree) touch = &bt;
+                if (touch && touch->touching && touch->geometry.overlap >= overlap) continue;
+                if (!touch) {
+                    blockTouches_.push_back(BlockStemTouch{i, a.tree, c, t, startedAt(overlap), ContactGeometry{}, false});
+                    touch = &blockTouches_.back();
+                }
+                ContactGeometry& g = touch->geometry;
+                g.normal = d / dist;
+                g.overlap = std::max(0.0, overlap - touch->history.overlapOffset);
+                g.point = q + g.normal * (r - 0.5 * overlap);
+                g.relativeVelocity = block.velocity + omega.cross(g.point - block.position) - connectionVelocity(s, c, t, g.point);
+                g.meanSpinNormal = 0.5 * (omega + (1 - t) * s.angularVelocity[c] + t * s.angularVelocity[c + 1]).dot(g.normal);
+                g.radiusA = rb;
+                g.radiusB = r;
+                touch->connection = c;
+                touch->t = t;
+                touch->touching = true;
+            }
+        }
+    }
+    blockTouches_.erase(std::remove_if(blockTouches_.begin(), blockTouches_.end(), [](const BlockStemTouch& c) { return !c.touching; }),
+                        blockTouches_.end());
+}
+
+void ForestMotion::detectStemStem() {
+    for (auto& touch : stemTouches_) touch.touching = false;
+    for (std::size_t ia = 0; ia < awake_.size(); ++ia)
+        for (std::size_t ib = ia + 1; ib < awake_.size(); ++ib) {
+            const AwakeStem& A = awake_[ia];
+            const AwakeStem& B = awake_[ib];
+            const PlacedTree& ta = trees_.tree(A.tree);
+            const PlacedTree& tb = trees_.tree(B.tree);
+            if (horizontalDistance(ta.foot, tb.foot) > ta.geometry.height + tb.geometry.height) continue;
+            for (std::size_t ca = 0; ca < A.stem.connectionCount(); ++ca) {
+                if (A.stem.broken(ca)) continue;
+                const Vec3 &a0 = A.stem.position[ca], &a1 = A.stem.position[ca + 1];
+                const double ra = 0.5 * A.stem.connectionDiameter(ca);
+                for (std::size_t cb = 0; cb < B.stem.connectionCount(); ++cb) {
+                    if (B.stem.broken(cb)) continue;
+                    const Vec3 &b0 = B.stem.position[cb], &b1 = B.stem.position[cb + 1];
+                    const double rb = 0.5 * B.stem.connectionDiameter(cb);
+                    // Cheap rejection on the segments' midpoints before the exact closest points.
+                    const double reach = ra + rb + 0.5 * ((a1 - a0).norm() + (b1 - b0).norm());
+                    if ((0.5 * (a0 + a1) - 0.5 * (b0 + b1)).squaredNorm() > reach * reach) continue;
+                    const auto [s, t] = closestBetweenSegments(a0, a1, b0, b1);
+                    const Vec3 pa = a0 + s * (a1 - a0), pb = b0 + t * (b1 - b0);
+                    const Vec3 d = pa - pb;
+                    const double dist = d.norm();
+                    const double overlap = ra + rb - dist;
+                    if (overlap <= 0 || dist == 0) continue;
+                    StemStemTouch* touch = nullptr;
+                    // Stem/stem contacts are frictionless (Table 2: phi_t-t = 0), so they carry no
+                    // history worth moving along the stems: one contact per pair of connections.
+                    for (auto& st : stemTouches_)
+                        if (st.treeA == A.tree && st.treeB == B.tree && st.connectionA == ca && st.connectionB == cb) touch = &st;
+                    if (!touch) {
+                        const bool fused = fusedAtRest(ta, ca, A.stem, tb, cb, B.stem);
+                        stemTouches_.push_back(StemStemTouch{A.tree, B.tree, ca, cb, s, t, startedAt(overlap), ContactGeometry{}, false, fused});
+                        touch = &stemTouches_.back();
+                    }
+                    ContactGeometry& g = touch->geometry;
+                    g.normal = d / dist;
+                    g.overlap = std::max(0.0, overlap - touch->history.overlapOffset);
+                    g.point = pb + g.normal * (rb - 0.5 * overlap);
+                    g.relativeVelocity = connectionVelocity(A.stem, ca, s, g.point) - connectionVelocity(B.stem, cb, t, g.point);
+                    g.meanSpinNormal = 0.5 * ((1 - s) * A.stem.angularVelocity[ca] + s * A.stem.angularVelocity[ca + 1] +
+                                              (1 - t) * B.stem.angularVelocity[cb] + t * B.stem.angularVelocity[cb + 1])
+                                                 .dot(g.normal);
+                    g.radiusA = ra;
+                    g.radiusB = rb;
+                    touch->s = s;
+                    touch->t = t;
+                    touch->touching = true;
+                }
+            }
+        }
+    stemTouches_.erase(std::remove_if(stemTouches_.begin(), stemTouches_.end(), [](const StemStemTouch& c) { return !c.touching; }),
+                       stemTouches_.end());
+}
+
+void ForestMotion::detectStemSoil() {
+    for (auto& touch : soilTouches_) touch.touching = false;
+    const double rs = soil_.radius();
+    for (const auto& a : awake_) {
+        const Stem& s = a.stem;
+        for (std::uint32_t k = 1; k < s.nodeCount(); ++k) {
+            const Vec3& p = s.position[k];
+            const double r = 0.5 * s.diameterAt(s.restHeight(k));
+            if (p.z() - r > soil_.surfaceHeight(p.x(), p.y()) + 0.05) continue;  // soil tops are at the surface
+            nearSoil_.clear();
+            soil_.near(p, r + rs, nearSoil_);
+            for (std::uint32_t id : nearSoil_) {
+                const Vec3 d = p - soil_.center(id);
+                const double dist = d.norm();
+                const double overlap = r + rs - dist;
+                if (overlap <= 0 || dist == 0) continue;
+                StemSoilTouch* touch = nullptr;
+                for (auto& st : soilTouches_)
+                    if (st.tree == a.tree && st.node == k && st.soil == id) touch = &st;
+                if (!touch) {
+                    soilTouches_.push_back(StemSoilTouch{a.tree, k, id, startedAt(overlap), ContactGeometry{}, false});
+                    touch = &soilTouches_.back();
+                }
+                ContactGeometry& g = touch->geometry;
+                g.normal = d / dist;
+                g.overlap = std::max(0.0, overlap - touch->history.overlapOffset);
+                g.point = soil_.center(id) + g.normal * (rs - 0.5 * overlap);
+                g.relativeVelocity = s.velocity[k] + s.angularVelocity[k].cross(g.point - p);
+                g.meanSpinNormal = 0.5 * s.angularVelocity[k].dot(g.normal);
+                g.radiusA = r;
+                g.radiusB = rs;
+                touch->touching = true;
+            }
+        }
+    }
+    soilTouches_.erase(std::remove_if(soilTouches_.begin(), soilTouches_.end(), [](const StemSoilTouch& c) { return !c.touching; }),
+                       soilTouches_.end());
+}
+
+double ForestMotion::stableStep(const RigidBody& block, StableStep& blockStep) const {
+    // Each contact spring k adds k w^2 (1/m + |arm x n|^2 / I) to the squared frequency of each node
+    // that carries a share w of it; they add up per node (Gershgorin), and on top of the stem's own
+    // springs: omega^2 = (2 / dt_stem)^2 + max over nodes of the contacts' sum.
+    for (auto& a : awake_) a.contactOmega2.assign(a.stem.nodeCount(), 0.0);
+    auto awakeOf = [this](std::uint32_t tree) -> const AwakeStem& {
+        for (const auto& a : awake_)
+            if (a.tree == tree) return a;
+        throw std::logic_error("contact with a stem that is not awake");
+    };
+    auto onConnection = [&](std::uint32_t tree, std::size_t c, double t, const ContactGeometry& g, double k) {
+        const AwakeStem& a = awakeOf(tree);
+        const Vec3 arm = (g.point - ((1 - t) * a.stem.position[c] + t * a.stem.position[c + 1])).cross(g.normal);
+        for (const auto& [node, w] : {std::pair<std::size_t, double>{c, 1 - t}, {c + 1, t}}) {
+            double inv = 0;
+            if (a.stem.translates(node)) inv += 1 / a.stem.mass()[node];
+            if (a.stem.rotates(node)) inv += arm.squaredNorm() / a.stem.inertia()[node];
+            a.contactOmega2[node] += k * w * w * inv;
+        }
+    };
+    for (const auto& t : blockTouches_) {
+        const double k = blockStemLaw_->normalStiffness(t.geometry);
+        blockStep.add(k, 0, block.inverseMassAlong(t.geometry.point, t.geometry.normal));
+        onConnection(t.tree, t.connection, t.t, t.geometry, k);
+    }
+    for (const auto& t : stemTouches_) {
+        if (t.ignored) continue;
+        const double k = stemStemLaw_->normalStiffness(t.geometry);
+        onConnection(t.treeA, t.connectionA, t.s, t.geometry, k);
+        onConnection(t.treeB, t.connectionB, t.t, t.geometry, k);
+    }
+    for (const auto& t : soilTouches_) {
+        const AwakeStem& a = awakeOf(t.tree);
+        a.contactOmega2[t.node] += stemSoilLaw_->normalStiffness(t.geometry) *
+                                   nodeInverseMass(a.stem, t.node, t.geometry.point, t.geometry.normal);
+    }
+    double limit = std::numeric_limits<double>::infinity();
+    for (const auto& a : awake_) {
+        const double own = 2 / a.stableStep;
+        const double contacts = *std::max_element(a.contactOmega2.begin(), a.contactOmega2.end());
+        limit = std::min(limit, 2 / std::sqrt(own * own + contacts));
+    }
+    return limit;
+}
+
+void ForestMotion::applyToConnection(AwakeStem& a, std::size_t c, double t, const Vec3& point, const Vec3& force) {
+    // The force's line through the axis point q is carried by the two nodes as (1 - t) and t of it,
+    // which also reproduces its moment about any point; what the offset from q to the contact
+    // point adds (the friction's moment about the axis, mostly twist) is shared likewise.
+    const Vec3& pc = a.stem.position[c];
+    const Vec3& pd = a.stem.position[c + 1];
+    const Vec3 torque = (point - ((1 - t) * pc + t * pd)).cross(force);
+    a.loads.force[c] += (1 - t) * force;
+    a.loads.force[c + 1] += t * force;
+    a.loads.torque[c] += (1 - t) * torque;
+    a.loads.torque[c + 1] += t * torque;
+}
+
+void ForestMotion::forces(const RigidBody& block, double dt, Vec3& force, Vec3& torque) {
+    if (empty()) return;
+    for (auto& a : awake_) {
+        a.loads.force.assign(a.stem.nodeCount(), Vec3::Zero());
+        a.loads.torque.assign(a.stem.nodeCount(), Vec3::Zero());
+    }
+    double stored = 0;
+    for (auto& t : blockTouches_) {
+        const Vec3 f = blockStemLaw_->force(t.geometry, t.history, dt, contactLedger_);  // on the block
+        force += f;
+        torque += (t.geometry.point - block.position).cross(f);
+        applyToConnection(*awake(t.tree), t.connection, t.t, t.geometry.point, -f);
+        stored += blockStemLaw_->storedEnergy(t.geometry, t.history);
+    }
+    for (auto& t : stemTouches_) {
+        if (t.ignored) continue;
+        const Vec3 f = stemStemLaw_->force(t.geometry, t.history, dt, contactLedger_);  // on stem A
+        applyToConnection(*awake(t.treeA), t.connectionA, t.s, t.geometry.point, f);
+        applyToConnection(*awake(t.treeB), t.connectionB, t.t, t.geometry.point, -f);
+        stored += stemStemLaw_->storedEnergy(t.geometry, t.history);
+    }
+    for (auto& t : soilTouches_) {
+        const Vec3 f = stemSoilLaw_->force(t.geometry, t.history, dt, contactLedger_);
+        AwakeStem& a = *awake(t.tree);
+        a.loads.force[t.node] += f;
+        a.loads.torque[t.node] += (t.geometry.point - a.stem.position[t.node]).cross(f);
+        stored += stemSoilLaw_->storedEnergy(t.geometry, t.history);
+    }
+    budget_ = stored;  // completed by integrate()
+}
+
+void ForestMotion::integrate(double dt) {
+    if (empty()) return;
+    lastDt_ = dt;
+    double stems = 0;
+    for (auto& a : awake_) {
+        const double externalBefore = a.stem.ledger.externalWork;
+        const StemEnergy e = stepper_.step(a.stem, dt, a.loads);
+        // The stem's own budget without the work of the contact loads, which the contacts' springs
+        // and the block account for: energy + dissipated - created, at the step's start.
+        stems += e.total() + e.netLoss + 0.5 * (externalBefore + a.stem.ledger.externalWork);
+        const bool broken = anyBroken(a.stem);
+        if (broken != a.broken) {
+            a.stableStep = a.stem.stableTimeStep();  // a broken connection no longer limits the step
+            a.broken = broken;
+        }
+    }
+    budget_ += stems + contactLedger_.friction + frozenElastic_ + frozenPotential_ + slept_.frozen + slept_.bendingPlasticity +
+               slept_.bendingDamping + slept_.rootPlasticity + slept_.rupture - slept_.unloadingGain - injected_;
+}
+
+void ForestMotion::sleep(const RigidBody& block, double t) {
+    if (empty() || cfg_.activity.allAwake) return;
+    const double reach = block.boundingRadius() + cfg_.activity.wakeMargin + 1.0;
+    for (std::size_t k = awake_.size(); k-- > 0;) {
+        AwakeStem& a = awake_[k];
+        const PlacedTree& p = trees_.tree(a.tree);
+        if (t - a.lastBlockContact < cfg_.activity.sleepAfter) continue;
+        if (horizontalDistance(block.position, p.foot) < reach + baseRadius(p)) continue;
+        bool leaning = false;  // on an awake neighbour
+        for (const auto& st : stemTouches_)
+            if (!st.ignored && (st.treeA == a.tree || st.treeB == a.tree)) leaning = true;
+        if (leaning) continue;
+        if (openImpactOf_.count(a.tree)) closeImpact(openImpactOf_.at(a.tree), block);
+        Stem& s = a.stem;
+        // Its vibration stops with it (the block is gone); that energy is booked, not lost silently.
+        slept_.frozen += s.kineticEnergy();
+        for (std::size_t i = 0; i < s.nodeCount(); ++i) s.velocity[i].setZero(), s.angularVelocity[i].setZero();
+        frozenElastic_ += s.elasticEnergy();
+        frozenPotential_ += potentialEnergy(s, cfg_.gravity);
+        slept_.bendingPlasticity += s.ledger.bendingPlasticity;
+        slept_.bendingDamping += s.ledger.bendingDamping;
+        slept_.rootPlasticity += s.ledger.rootPlasticity;
+        slept_.rupture += s.ledger.rupture;
+        slept_.unloadingGain += s.ledger.unloadingGain;
+        const std::uint32_t tree = a.tree;
+        soilTouches_.erase(std::remove_if(soilTouches_.begin(), soilTouches_.end(), [tree](const StemSoilTouch& c) { return c.tree == tree; }),
+                           soilTouches_.end());
+        stemTouches_.erase(std::remove_if(stemTouches_.begin(), stemTouches_.end(),
+                                          [tree](const StemStemTouch& c) { return c.treeA == tree || c.treeB == tree; }),
+                           stemTouches_.end());
+        asleep_.emplace(tree, std::move(s));
+        awake_.erase(awake_.begin() + static_cast<std::ptrdiff_t>(k));
+    }
+}
+
+void ForestMotion::openImpact(const RigidBody& block, const BlockStemTouch& touch, double t) {
+    const PlacedTree& p = trees_.tree(touch.tree);
+    TreeImpact r;
+    r.tree = p.id;
+    r.time = t;
+    r.speedBefore = block.velocity.norm();
+    r.energyBefore = block.kineticEnergy();
+    r.height = touch.geometry.point.z() - p.foot.z();
+    // Lateral offset of the block's centre from the stem's axis, across its horizontal motion,
+    // relative to the largest offset at which they can touch.
+    const Vec3 v(block.velocity.x(), block.velocity.y(), 0);
+    const Vec3 w = block.position - p.foot;
+    const double lateral = v.norm() > 0 ? (v.x() * w.y() - v.y() * w.x()) / v.norm() : 0;
+    r.eccentricity = std::clamp(lateral / (block.boundingRadius() + 0.5 * p.geometry.dbh), -1.0, 1.0);
+    openImpactOf_[touch.tree] = impacts_.size();
+    impacts_.push_back({r, true});
+}
+
+void ForestMotion::closeImpact(std::size_t index, const RigidBody& block) {
+    OpenImpact& i = impacts_[index];
+    i.record.speedAfter = block.velocity.norm();
+    i.record.energyAfter = block.kineticEnergy();
+    for (std::uint32_t tree = 0; tree < trees_.size(); ++tree) {
+        if (trees_.tree(tree).id != i.record.tree) continue;
+        const Stem* s = nullptr;
+        for (const auto& a : awake_)
+            if (a.tree == tree) s = &a.stem;
+        if (!s && asleep_.count(tree)) s = &asleep_.at(tree);
+        if (s) {
+            i.record.stemBroken = anyBroken(*s);
+            i.record.rootYielded = s->ledger.rootPlasticity > 0;
+        }
+        openImpactOf_.erase(tree);
+        break;
+    }
+    i.open = false;
+}
+
+std::vector<TreeImpact> ForestMotion::finish(const RigidBody& block) {
+    std::vector<TreeImpact> out;
+    for (std::size_t k = 0; k < impacts_.size(); ++k) {
+        if (impacts_[k].open) closeImpact(k, block);
+        out.push_back(impacts_[k].record);
+    }
+    return out;
+}
+
+ForestLedger ForestMotion::ledger() const {
+    ForestLedger l = slept_;
+    for (const auto& a : awake_) {
+        l.bendingPlasticity += a.stem.ledger.bendingPlasticity;
+        l.bendingDamping += a.stem.ledger.bendingDamping;
+        l.rootPlasticity += a.stem.ledger.rootPlasticity;
+        l.rupture += a.stem.ledger.rupture;
+        l.unloadingGain += a.stem.ledger.unloadingGain;
+    }
+    l.contactFriction = contactLedger_.friction;
+    return l;
+}
+
+}  // namespace sylva::dem

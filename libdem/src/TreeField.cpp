@@ -1,0 +1,59 @@
+#include "libdem/TreeField.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "libstand/InputError.hpp"
+
+namespace sylva::dem {
+
+TreeField::TreeField(const stand::Forest& forest, const SoilBed& soil) {
+    if (forest.trees.empty()) return;
+    double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
+    for (const auto& t : forest.trees) {
+        if (t.x < soil.xmin() || t.x > soil.xmax() || t.y < soil.ymin() || t.y > soil.ymax())
+            throw InputError("forest: stem " + std::to_string(t.id) + " at (" + std::to_string(t.x) + ", " +
+                             std::to_string(t.y) + ") is outside the terrain");
+        StemGeometry g;
+        g.dbh = t.dbhCm / 100;
+        g.height = t.heightM;
+        g.crownLength = t.crownLengthM;
+        g.crownMass = t.crownMassKg;
+        trees_.push_back({t.id, Vec3(t.x, t.y, soil.surfaceHeight(t.x, t.y)), g,
+                          t.stool ? StemFoot::Clamped : StemFoot::RootSpring});  // Sect. 2.1.2
+        tallest_ = std::max(tallest_, g.height);
+        thickest_ = std::max(thickest_, g.dbh);
+        xmin = std::min(xmin, t.x), xmax = std::max(xmax, t.x);
+        ymin = std::min(ymin, t.y), ymax = std::max(ymax, t.y);
+    }
+    x0_ = xmin, y0_ = ymin;
+    nx_ = static_cast<int>((xmax - xmin) / cell_) + 1;
+    ny_ = static_cast<int>((ymax - ymin) / cell_) + 1;
+    std::vector<std::uint32_t> count(static_cast<std::size_t>(nx_) * ny_ + 1, 0);
+    auto cellOf = [&](const Vec3& p) {
+        return static_cast<std::size_t>((p.x() - x0_) / cell_) * ny_ + static_cast<std::size_t>((p.y() - y0_) / cell_);
+    };
+    for (const auto& t : trees_) ++count[cellOf(t.foot) + 1];
+    for (std::size_t c = 1; c < count.size(); ++c) count[c] += count[c - 1];
+    cellStart_ = count;
+    cellTrees_.resize(trees_.size());
+    for (std::uint32_t i = 0; i < trees_.size(); ++i) cellTrees_[count[cellOf(trees_[i].foot)]++] = i;
+}
+
+void TreeField::near(double x, double y, double radius, std::vector<std::uint32_t>& out) const {
+    if (trees_.empty()) return;
+    const int i0 = std::max(0, static_cast<int>(std::floor((x - radius - x0_) / cell_)));
+    const int i1 = std::min(nx_ - 1, static_cast<int>(std::floor((x + radius - x0_) / cell_)));
+    const int j0 = std::max(0, static_cast<int>(std::floor((y - radius - y0_) / cell_)));
+    const int j1 = std::min(ny_ - 1, static_cast<int>(std::floor((y + radius - y0_) / cell_)));
+    for (int i = i0; i <= i1; ++i)
+        for (int j = j0; j <= j1; ++j) {
+            const std::size_t c = static_cast<std::size_t>(i) * ny_ + j;
+            for (std::uint32_t k = cellStart_[c]; k < cellStart_[c + 1]; ++k) {
+                const Vec3& f = trees_[cellTrees_[k]].foot;
+                if ((f.x() - x) * (f.x() - x) + (f.y() - y) * (f.y() - y) <= radius * radius) out.push_back(cellTrees_[k]);
+            }
+        }
+}
+
+}  // namespace sylva::dem

@@ -1,0 +1,27 @@
+#pragma once
+// `sylvarock assess` as a library call: checks the inputs, opens (or resumes) the campaign in the
+// output directory, runs what is missing and analyses the stored runs. Writing the report is
+// Report.hpp's job.
+#include <functional>
+#include <string>
+
+#include "libassess/ProtectionAnalysis.hpp"
+
+namespace sylva::assess {
+
+struct AssessmentOptions {
+    AssessmentDesign design;
+    std::string outDir;
+    bool resume = false;
+    int threads = 0;  // 0: all cores; results do not depend on it
+    int bootstrapReplicates = 2000;
+    double confidence = 0.95;
+    std::function<void(const std::string&)> onNote;  // warnings and what is being done, one line each
+    std::function<void(const std::string& campaign, int done, int total)> onRunDone;
+};
+
+// InputError for unusable inputs (stands, scene, options, output directory, mismatched design on
+// resume) before any run starts.
+AssessmentResults runAssessment(const AssessmentOptions& options);
+
+}  // namespace sylva::assess

@@ -1,0 +1,41 @@
+#pragma once
+// What an assessment computes: which stands, on which scene, how many forest realisations (K), block
+// runs per realisation (M) and baseline runs without forest (B), from which seed. Written to the
+// output directory so that a resumed campaign can be refused if it asks for something else.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace sylva::assess {
+
+struct StandSource {
+    std::string name;  // the basename of the prefix, e.g. "GR1"
+    std::string stemsCsv, plotsCsv;
+};
+
+// "data/stands/GR1" -> GR1 with data/stands/GR1_stems.csv and data/stands/GR1_plots.csv. Throws
+// InputError if either file is missing.
+StandSource standFromPrefix(const std::string& prefix);
+
+struct AssessmentDesign {
+    std::vector<StandSource> stands;
+    std::string sceneFile;
+    int runs = 100;            // M, block runs per forest realisation (the paper's 100)
+    int realisations = 5;      // K, forests generated per stand and structure
+    int baselineRuns = 1000;   // B, runs without forest
+    std::uint64_t seed = 1;
+};
+
+// InputError for: no stand, two stands of one name, M, K or B below 1.
+void validate(const AssessmentDesign& design);
+
+// The design as text, one `key = value` per line: the counts, the seed, and each input file by name
+// and a fingerprint of its contents (scene file, its slope profile or DTM, each stand's two files).
+// Paths are written as comments: moving the data does not change the design, editing it does.
+std::string designText(const AssessmentDesign& design);
+
+// Throws InputError naming `designFile`, the line and both values at the first line where the
+// design stored there differs from `design`'s (comments are ignored).
+void requireSameDesign(const std::string& designFile, const AssessmentDesign& design);
+
+}  // namespace sylva::assess

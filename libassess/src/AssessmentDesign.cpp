@@ -1,0 +1,86 @@
+#include "libassess/AssessmentDesign.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "libassess/Hashing.hpp"
+#include "libdem/SceneConfig.hpp"
+#include "libstand/InputError.hpp"
+
+namespace sylva::assess {
+
+namespace {
+
+std::string fileLine(const std::string& key, const std::string& path) {
+    return key + " = " + toHex(fileFingerprint(path), 16) + "\n# " + key + " file: " +
+           std::filesystem::absolute(path).lexically_normal().string() + "\n";
+}
+
+std::vector<std::pair<long, std::string>> significantLines(std::istream& in) {
+    std::vector<std::pair<long, std::string>> lines;
+    std::string line;
+    for (long n = 1; std::getline(in, line); ++n)
+        if (!line.empty() && line[0] != '#') lines.emplace_back(n, line);
+    return lines;
+}
+
+}  // namespace
+
+StandSource standFromPrefix(const std::string& prefix) {
+    StandSource s;
+    s.name = std::filesystem::path(prefix).filename().string();
+    s.stemsCsv = prefix + "_stems.csv";
+    s.plotsCsv = prefix + "_plots.csv";
+    if (s.name.empty()) throw InputError("--stand '" + prefix + "': expected a prefix such as data/stands/GR1");
+    for (const auto& f : {s.stemsCsv, s.plotsCsv})
+        if (!std::filesystem::is_regular_file(f))
+            throw InputError("--stand '" + prefix + "': " + f + " does not exist (a stand is given by the prefix of " +
+                             "its PREFIX_stems.csv and PREFIX_plots.csv)");
+    return s;
+}
+
+void validate(const AssessmentDesign& d) {
+    if (d.stands.empty()) throw InputError("no stand to assess: give at least one --stand PREFIX");
+    std::set<std::string> names;
+    for (const auto& s : d.stands)
+        if (!names.insert(s.name).second) throw InputError("stand '" + s.name + "' is given twice");
+    if (d.runs < 1) throw InputError("--runs must be at least 1, got " + std::to_string(d.runs));
+    if (d.realisations < 1) throw InputError("--realisations must be at least 1, got " + std::to_string(d.realisations));
+    if (d.baselineRuns < 1) throw InputError("--baseline-runs must be at least 1, got " + std::to_string(d.baselineRuns));
+}
+
+std::string designText(const AssessmentDesign& d) {
+    std::ostringstream out;
+    out << "# sylvarock assess: the design of the campaign in this directory (checked by --resume)\n"
+        << "format = 1\nseed = " << d.seed << "\nruns_per_realisation = " << d.runs << "\nrealisations = " << d.realisations
+        << "\nbaseline_runs = " << d.baselineRuns << "\n";
+    const dem::SceneConfig scene = dem::loadScene(d.sceneFile);
+    out << fileLine("scene", d.sceneFile);
+    if (!scene.terrain.profile.empty()) out << fileLine("scene_profile", scene.terrain.profile);
+    if (!scene.terrain.dtm.empty()) out << fileLine("scene_dtm", scene.terrain.dtm);
+    out << "stands = " << d.stands.size() << "\n";
+    for (const auto& s : d.stands) {
+        out << "stand = " << s.name << "\n";
+        out << fileLine("stand_stems", s.stemsCsv) << fileLine("stand_plots", s.plotsCsv);
+    }
+    return out.str();
+}
+
+void requireSameDesign(const std::string& designFile, const AssessmentDesign& design) {
+    std::ifstream stored(designFile);
+    if (!stored) throw InputError(designFile, 0, "cannot read the design of the campaign to resume");
+    std::istringstream wanted(designText(design));
+    const auto have = significantLines(stored), want = significantLines(wanted);
+    const std::string advice = "; resume with the options of that campaign, or start a new one with another --out";
+    for (std::size_t i = 0; i < std::max(have.size(), want.size()); ++i) {
+        if (i < have.size() && i < want.size() && have[i].second == want[i].second) continue;
+        const long line = i < have.size() ? have[i].first : (have.empty() ? 0 : have.back().first);
+        const std::string was = i < have.size() ? "'" + have[i].second + "'" : "nothing";
+        const std::string now = i < want.size() ? "'" + want[i].second + "'" : "nothing";
+        throw InputError(designFile, line, "the campaign there was started with " + was + ", this one asks for " + now + advice);
+    }
+}
+
+}  // namespace sylva::assess

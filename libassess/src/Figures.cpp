@@ -1,0 +1,166 @@
+#include "libassess/Figures.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "libassess/CampaignPlan.hpp"
+#include "libstand/InputError.hpp"
+
+namespace fs = std::filesystem;
+
+namespace sylva::assess {
+
+namespace {
+
+// A gnuplot single-quoted string: a quote inside is doubled.
+std::string quoted(const std::string& text) {
+    std::string out = "'";
+    for (char c : text) out += c == '\'' ? std::string("''") : std::string(1, c);
+    return out + "'";
+}
+
+// A shell single-quoted word.
+std::string shellQuoted(const std::string& text) {
+    std::string out = "'";
+    for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+std::ofstream openData(const std::string& path) {
+    std::ofstream out(path, std::ios::trunc);
+    if (!out) throw InputError(path, 0, "cannot write");
+    out.precision(10);
+    return out;
+}
+
+// Cumulative share of blocks stopped against run-out: each stop raises the curve by 1/n.
+void writeCdf(const std::string& path, std::vector<double> runout) {
+    std::sort(runout.begin(), runout.end());
+    auto out = openData(path);
+    out << "runout_m,share_stopped\n";
+    for (std::size_t i = 0; i < runout.size(); ++i) out << runout[i] << ',' << (i + 1.0) / runout.size() << '\n';
+}
+
+std::vector<double> pooledRunout(const StructureAssessment& row) {
+    std::vector<double> v;
+    for (const auto& runs : row.runs)
+        for (const auto& r : runs) v.push_back(r.runoutM);
+    return v;
+}
+
+std::string cdfFile(const StructureAssessment& row) { return "data/cdf_" + row.name + "_" + structureCode(row.structure) + ".csv"; }
+
+std::vector<std::string> standNames(const AssessmentResults& results) {
+    std::vector<std::string> names;
+    for (const auto& row : results.stands)
+        if (std::find(names.begin(), names.end(), row.name) == names.end()) names.push_back(row.name);
+    return names;
+}
+
+void writeData(const std::string& dir, const AssessmentResults& results) {
+    fs::create_directories(dir + "/data");
+    std::vector<double> baseline;
+    for (const auto& r : results.baseline) baseline.push_back(r.runoutM);
+    writeCdf(dir + "/data/cdf_baseline.csv", baseline);
+    const auto names = standNames(results);
+    for (auto structure : assessedStructures()) {
+        const std::string code = structureCode(structure);
+        auto pf = openData(dir + "/data/pf50_" + code + ".csv");
+        pf << "index,stand,pf50,pf50_low,pf50_high,basal_area_m2_ha,mean_dbh_cm,stems_per_ha\n";
+        auto stops = openData(dir + "/data/stops_" + code + ".csv");
+        stops << "stand,realisation,run,x_m,y_m\n";
+        for (const auto& row : results.stands) {
+            if (row.structure != structure) continue;
+            writeCdf(dir + "/" + cdfFile(row), pooledRunout(row));
+            const auto index = std::find(names.begin(), names.end(), row.name) - names.begin();
+            pf << index << ',' << row.name << ',' << row.pf50 << ',' << row.pf50Ci.low << ',' << row.pf50Ci.high << ','
+               << row.inventory.basalAreaM2Ha << ',' << row.inventory.meanDbhCm << ',' << row.inventory.stemsPerHa << '\n';
+            for (std::size_t k = 0; k < row.runs.size(); ++k)
+                for (const auto& r : row.runs[k]) stops << row.name << ',' << k + 1 << ',' << r.run << ',' << r.stopX << ',' << r.stopY << '\n';
+        }
+    }
+    auto stops = openData(dir + "/data/stops_baseline.csv");
+    stops << "stand,realisation,run,x_m,y_m\n";
+    for (const auto& r : results.baseline) stops << "baseline,0," << r.run << ',' << r.stopX << ',' << r.stopY << '\n';
+}
+
+std::string script(const AssessmentResults& results) {
+    const auto names = standNames(results);
+    const int n = static_cast<int>(names.size());
+    const int cols = std::min(n, 2), rows = (n + 1) / 2;
+    std::ostringstream gp;
+    gp << "# Figures of sylvarock assess; run `gnuplot figures.gp` in this folder to redraw them.\n"
+       << "set datafile separator ','\nset grid\nset key bottom right\n"
+       << "A = '#c0392b'; NA = '#2471a3'; BASE = '#000000'\n\n";
+
+    gp << "# Figs. 9-10: cumulative run-out with and without forest, A against NA, one panel per stand\n"
+       << "set terminal svg size " << 520 * cols << ',' << 380 * rows << " dynamic noenhanced font 'sans,11'\n"
+       << "set output 'runout_cdf.svg'\nset multiplot layout " << rows << ',' << cols
+       << " title 'Cumulative distribution of run-out along the slope'\n"
+       << "set xlabel 'run-out along the slope (m)'\nset ylabel 'share of blocks stopped'\nset yrange [0:1]\n";
+    for (const auto& name : names) {
+        gp << "set title " << quoted(name) << "\nplot 'data/cdf_baseline.csv' every ::1 using 1:2 with steps lw 2 lc rgb BASE title 'no forest'";
+        for (const auto& row : results.stands)
+            if (row.name == name)
+                gp << ", \\\n     " << quoted(cdfFile(row)) << " every ::1 using 1:2 with steps lw 2 lc rgb "
+                   << structureCode(row.structure) << " title " << quoted(structureCode(row.structure));
+        gp << "\n";
+    }
+    gp << "unset multiplot\nset autoscale y\n\n";
+
+    gp << "# Fig. 11: PF50 per stand with its bootstrap interval\n"
+       << "set terminal svg size " << std::max(500, 110 * n + 200) << ",420 dynamic noenhanced font 'sans,11'\nset output 'pf50.svg'\n"
+       << "set title 'Protection index PF50 (Eq. 26) with " << static_cast<int>(std::lround(100 * results.bootstrap.confidence))
+       << " % bootstrap interval'\nset xlabel 'stand'\nset ylabel 'PF50'\nset xrange [-0.6:" << n - 0.4 << "]\nset key top right\n"
+       << "plot 'data/pf50_A.csv' every ::1 using ($1-0.12):3:4:5:xtic(2) with yerrorbars pt 7 lc rgb A title 'A (aggregated)', \\\n"
+       << "     'data/pf50_NA.csv' every ::1 using ($1+0.12):3:4:5 with yerrorbars pt 5 lc rgb NA title 'NA (random)'\n"
+       << "set autoscale x\nset xtics autofreq\n\n";
+
+    gp << "# Fig. 12: PF50 against the inventory's basal area, mean diameter and stem density\n"
+       << "set terminal svg size 1200,400 dynamic noenhanced font 'sans,11'\nset output 'pf50_dendrometry.svg'\n"
+       << "set multiplot layout 1,3 title 'PF50 against the stands'' dendrometry'\nunset title\nset ylabel 'PF50'\n";
+    const char* const axes[][2] = {{"6", "G (m²/ha)"}, {"7", "Mean D (cm)"}, {"8", "N (stems/ha)"}};
+    for (const auto& axis : axes)
+        gp << "set xlabel '" << axis[1] << "'\nplot 'data/pf50_A.csv' every ::1 using " << axis[0]
+           << ":3:4:5 with yerrorbars pt 7 lc rgb A title 'A', \\\n     'data/pf50_NA.csv' every ::1 using " << axis[0]
+           << ":3:4:5 with yerrorbars pt 5 lc rgb NA title 'NA'\n";
+    gp << "unset multiplot\n\n";
+
+    gp << "# Fig. 8: where the blocks stopped (all stands pooled per structure); the forest starts at the dashed line\n"
+       << "set terminal svg size 1000,420 dynamic noenhanced font 'sans,11'\nset output 'stop_map.svg'\nset title 'Stop positions'\n"
+       << "set xlabel 'x (m)'\nset ylabel 'y (m)'\nset xrange [" << results.terrainXmin << ':' << results.terrainXmax
+       << "]\nset yrange [" << results.terrainYmin << ':' << results.terrainYmax << "]\nset size ratio -1\nset key outside right\n"
+       << "set arrow from " << results.forestStartX << ',' << results.terrainYmin << " to " << results.forestStartX << ','
+       << results.terrainYmax << " nohead dt 2 lc rgb '#27ae60'\n"
+       << "plot 'data/stops_baseline.csv' every ::1 using 4:5 with points pt 7 ps 0.4 lc rgb BASE title 'no forest', \\\n"
+       << "     'data/stops_A.csv' every ::1 using 4:5 with points pt 7 ps 0.4 lc rgb A title 'A', \\\n"
+       << "     'data/stops_NA.csv' every ::1 using 4:5 with points pt 7 ps 0.4 lc rgb NA title 'NA'\n";
+    return gp.str();
+}
+
+}  // namespace
+
+FigureSet drawFigures(const std::string& reportDir, const AssessmentResults& results) {
+    writeData(reportDir, results);
+    {
+        std::ofstream gp(reportDir + "/figures.gp", std::ios::trunc);
+        gp << script(results);
+        if (!gp.flush()) throw InputError(reportDir + "/figures.gp", 0, "cannot write");
+    }
+    FigureSet set;
+    const std::vector<std::string> svgs{"runout_cdf.svg", "pf50.svg", "pf50_dendrometry.svg", "stop_map.svg"};
+    for (const auto& f : svgs) fs::remove(reportDir + "/" + f);
+    // gnuplot's messages go to our standard error; its exit status tells whether it ran.
+    const int status = std::system(("cd " + shellQuoted(reportDir) + " && gnuplot figures.gp 1>&2").c_str());
+    for (const auto& f : svgs)
+        if (fs::exists(reportDir + "/" + f)) set.files.push_back(f);
+    if (status != 0 || set.files.size() != svgs.size())
+        set.warning = "gnuplot did not draw every figure (is gnuplot-nox installed?); the data and figures.gp are in " + reportDir;
+    return set;
+}
+
+}  // namespace sylva::assess

@@ -1,0 +1,270 @@
+#include "libassess/Report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#include "libassess/CampaignPlan.hpp"
+#include "libdem/CampaignSummary.hpp"
+#include "libstand/InputError.hpp"
+#include "libstand/JsonWriter.hpp"
+
+namespace fs = std::filesystem;
+
+namespace sylva::assess {
+
+namespace {
+
+std::ofstream create(const std::string& path) {
+    std::ofstream out(path, std::ios::trunc);
+    if (!out) throw InputError(path, 0, "cannot write");
+    out.precision(10);
+    return out;
+}
+
+std::string fixed(double v, int decimals) {
+    if (!std::isfinite(v)) return "–";
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    return buf;
+}
+
+int percent(double confidence) { return static_cast<int>(std::lround(100 * confidence)); }
+
+// Mean of a statistic over a row's virtual forests (NaN values, an undefined index, are left out).
+template <class Get>
+double forestMean(const StructureAssessment& row, Get get) {
+    double sum = 0;
+    int n = 0;
+    for (const auto& f : row.forests)
+        if (std::isfinite(get(f))) {
+            sum += get(f);
+            ++n;
+        }
+    return n ? sum / n : std::nan("");
+}
+
+std::map<std::string, int> stopReasons(const std::vector<RunRecord>& runs) {
+    std::map<std::string, int> counts;
+    for (const auto& r : runs) ++counts[r.reason];
+    return counts;
+}
+
+std::vector<RunRecord> pooled(const StructureAssessment& row) {
+    std::vector<RunRecord> all;
+    for (const auto& runs : row.runs) all.insert(all.end(), runs.begin(), runs.end());
+    return all;
+}
+
+void summaryFields(JsonWriter& j, const ForestSummary& f) {
+    j.field("stems_per_ha", f.stemsPerHa).field("basal_area_m2_ha", f.basalAreaM2Ha).field("mean_dbh_cm", f.meanDbhCm)
+        .field("sd_dbh_cm", f.sdDbhCm).field("clark_evans", f.clarkEvans);
+}
+
+void stopReasonsField(JsonWriter& j, const std::vector<RunRecord>& runs) {
+    j.key("stop_reasons").beginObject();
+    for (const auto& [reason, count] : stopReasons(runs)) j.field(reason, count);
+    j.endObject();
+}
+
+void writeTables(const std::string& dir, const AssessmentResults& res) {
+    auto stands = create(dir + "/stands.csv");
+    stands << "stand,structure,pf50,pf50_low,pf50_high,dist50_m,realisations,runs_per_realisation,rank_pf50,rank_basal_area,"
+              "stems_per_ha,basal_area_m2_ha,mean_dbh_cm,sd_dbh_cm,clark_evans,virtual_basal_area_m2_ha,virtual_mean_dbh_cm,"
+              "virtual_sd_dbh_cm,virtual_clark_evans\n";
+    for (const auto& r : res.stands)
+        stands << r.name << ',' << structureCode(r.structure) << ',' << r.pf50 << ',' << r.pf50Ci.low << ',' << r.pf50Ci.high << ','
+               << r.dist50 << ',' << r.runs.size() << ',' << res.design.runs << ',' << r.rankPf50 << ',' << r.rankBasalArea << ','
+               << r.inventory.stemsPerHa << ',' << r.inventory.basalAreaM2Ha << ',' << r.inventory.meanDbhCm << ','
+               << r.inventory.sdDbhCm << ',' << r.inventory.clarkEvans << ','
+               << forestMean(r, [](const ForestSummary& f) { return f.basalAreaM2Ha; }) << ','
+               << forestMean(r, [](const ForestSummary& f) { return f.meanDbhCm; }) << ','
+               << forestMean(r, [](const ForestSummary& f) { return f.sdDbhCm; }) << ','
+               << forestMean(r, [](const ForestSummary& f) { return f.clarkEvans; }) << '\n';
+    auto forests = create(dir + "/forests.csv");
+    forests << "stand,structure,realisation,stems,stems_per_ha,basal_area_m2_ha,mean_dbh_cm,sd_dbh_cm,clark_evans,dist50_m,pf50\n";
+    for (const auto& r : res.stands)
+        for (std::size_t k = 0; k < r.forests.size(); ++k) {
+            const auto& f = r.forests[k];
+            std::vector<double> runout;
+            for (const auto& run : r.runs[k]) runout.push_back(run.runoutM);
+            forests << r.name << ',' << structureCode(r.structure) << ',' << k + 1 << ',' << f.stems << ',' << f.stemsPerHa << ','
+                    << f.basalAreaM2Ha << ',' << f.meanDbhCm << ',' << f.sdDbhCm << ',' << f.clarkEvans << ','
+                    << dem::quantile(runout, 0.5) << ',' << r.pf50PerRealisation[k] << '\n';
+        }
+    auto corr = create(dir + "/correlations.csv");
+    corr << "structure,stands,pearson_pf50_basal_area,pearson_pf50_mean_dbh,pearson_pf50_stems_per_ha\n";
+    for (const auto& c : res.correlations)
+        corr << structureCode(c.structure) << ',' << c.stands << ',' << c.basalArea << ',' << c.meanDbh << ',' << c.stemsPerHa << '\n';
+    auto runs = create(dir + "/runs.csv");
+    runs << "stand,structure,realisation,run,seed,runout_m,runout_horizontal_m,stop_x_m,stop_y_m,tree_impacts,reason\n";
+    const auto row = [&runs](const std::string& stand, const std::string& structure, std::size_t k, const RunRecord& r) {
+        runs << stand << ',' << structure << ',' << k << ',' << r.run << ',' << r.seed << ',' << r.runoutM << ',' << r.runoutHorizontalM
+             << ',' << r.stopX << ',' << r.stopY << ',' << r.treeImpacts << ',' << r.reason << '\n';
+    };
+    for (const auto& r : res.baseline) row("none", "", 0, r);
+    for (const auto& s : res.stands)
+        for (std::size_t k = 0; k < s.runs.size(); ++k)
+            for (const auto& r : s.runs[k]) row(s.name, structureCode(s.structure), k + 1, r);
+}
+
+void writeMarkdown(const std::string& path, const AssessmentResults& res, const FigureSet& figures) {
+    auto md = create(path);
+    const auto& d = res.design;
+    md << "# Protection of the stands against rockfall (sylvarock assess)\n\n"
+       << "Scene `" << d.sceneFile << "`; seed " << d.seed << "; per stand and structure " << d.realisations
+       << " virtual forest(s) of " << d.runs << " block runs each; " << d.baselineRuns << " runs without forest.\n\n"
+       << "PF50 = 1 − Dist50(with forest) / Dist50(without forest) (Toe et al., Eq. 26), Dist50 the median run-out "
+       << "along the slope of the pooled runs. The interval is a " << percent(res.bootstrap.confidence)
+       << " % percentile bootstrap (" << res.bootstrap.replicates
+       << " replicates) that resamples the forest realisations, then the runs within each, and the runs without forest, "
+       << "so it carries both the forest-to-forest and the block-to-block spread.\n\n"
+       << "Without forest: Dist50 = " << fixed(res.baselineDist50, 1) << " m over " << res.baseline.size() << " runs.\n\n";
+
+    for (auto structure : assessedStructures()) {
+        const std::string code = structureCode(structure);
+        md << "## " << (code == "A" ? "Aggregated forests (A)" : "Not aggregated forests (NA)") << "\n\n"
+           << "| stand | PF50 | " << percent(res.bootstrap.confidence) << " % interval | Dist50 (m) | rank PF50 | G (m²/ha) | rank G | "
+           << "Mean_D (cm) | N (/ha) |\n| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
+        for (const auto& r : res.stands)
+            if (r.structure == structure)
+                md << "| " << r.name << " | " << fixed(r.pf50, 3) << " | [" << fixed(r.pf50Ci.low, 3) << ", " << fixed(r.pf50Ci.high, 3)
+                   << "] | " << fixed(r.dist50, 1) << " | " << r.rankPf50 << " | " << fixed(r.inventory.basalAreaM2Ha, 2) << " | "
+                   << r.rankBasalArea << " | " << fixed(r.inventory.meanDbhCm, 2) << " | " << fixed(r.inventory.stemsPerHa, 0) << " |\n";
+        md << "\nRank 1 is the least protective stand (as in the paper's Fig. 11); stands whose intervals overlap are not "
+              "told apart by this campaign.\n\n";
+    }
+
+    md << "## PF50 and dendrometry (Fig. 12)\n\nPearson's correlation of PF50 with the inventories' G, Mean_D and N "
+          "(undefined below two stands):\n\n| structure | stands | r(PF50, G) | r(PF50, Mean_D) | r(PF50, N) |\n"
+          "| --- | --- | --- | --- | --- |\n";
+    for (const auto& c : res.correlations)
+        md << "| " << structureCode(c.structure) << " | " << c.stands << " | " << fixed(c.basalArea, 3) << " | " << fixed(c.meanDbh, 3)
+           << " | " << fixed(c.stemsPerHa, 3) << " |\n";
+
+    md << "\n## Inventories and virtual forests (Table 3)\n\nVirtual forests: mean over the realisations.\n\n"
+       << "| forest | Mean_D (cm) | Std_D (cm) | N (/ha) | G (m²/ha) | R_Clark |\n| --- | --- | --- | --- | --- | --- |\n";
+    for (const auto& r : res.stands) {
+        if (r.structure == assessedStructures().front())
+            md << "| " << r.name << " | " << fixed(r.inventory.meanDbhCm, 2) << " | " << fixed(r.inventory.sdDbhCm, 2) << " | "
+               << fixed(r.inventory.stemsPerHa, 0) << " | " << fixed(r.inventory.basalAreaM2Ha, 2) << " | "
+               << fixed(r.inventory.clarkEvans, 2) << " |\n";
+        md << "| " << r.name << "_" << structureCode(r.structure) << " | "
+           << fixed(forestMean(r, [](const ForestSummary& f) { return f.meanDbhCm; }), 2) << " | "
+           << fixed(forestMean(r, [](const ForestSummary& f) { return f.sdDbhCm; }), 2) << " | "
+           << fixed(forestMean(r, [](const ForestSummary& f) { return f.stemsPerHa; }), 0) << " | "
+           << fixed(forestMean(r, [](const ForestSummary& f) { return f.basalAreaM2Ha; }), 2) << " | "
+           << fixed(forestMean(r, [](const ForestSummary& f) { return f.clarkEvans; }), 2) << " |\n";
+    }
+
+    md << "\n## How the blocks stopped\n\n| campaign | rest | left the domain | time limit | tree impacts per run |\n"
+          "| --- | --- | --- | --- | --- |\n";
+    const auto reasons = [&md](const std::string& label, const std::vector<RunRecord>& runs) {
+        auto c = stopReasons(runs);
+        double impacts = 0;
+        for (const auto& r : runs) impacts += r.treeImpacts;
+        md << "| " << label << " | " << c["rest"] << " | " << c["left_domain"] << " | " << c["time_limit"] << " | "
+           << fixed(runs.empty() ? 0.0 : impacts / runs.size(), 2) << " |\n";
+    };
+    reasons("no forest", res.baseline);
+    for (const auto& r : res.stands) reasons(r.name + " " + structureCode(r.structure), pooled(r));
+    md << "\nA block that left the domain counts with the run-out at which it left: Dist50 is then a lower bound.\n";
+
+    md << "\n## Figures\n\n";
+    const std::map<std::string, std::string> captions{
+        {"runout_cdf.svg", "Cumulative run-out with and without forest, A against NA (Figs. 9–10)"},
+        {"pf50.svg", "PF50 per stand with its interval (Fig. 11)"},
+        {"pf50_dendrometry.svg", "PF50 against G, Mean_D and N (Fig. 12)"},
+        {"stop_map.svg", "Stop positions (Fig. 8)"}};
+    for (const auto& f : figures.files) md << "![" << captions.at(f) << "](" << f << ")\n\n";
+    if (!figures.warning.empty()) md << "Figures missing: " << figures.warning << "\n\n";
+    md << "Tables: `stands.csv`, `forests.csv` (each realisation), `correlations.csv`, `runs.csv` (every run); "
+          "figure data in `data/`, the gnuplot script `figures.gp`.\n";
+}
+
+}  // namespace
+
+void writeResultsJson(const std::string& path, const AssessmentResults& res) {
+    auto out = create(path);
+    JsonWriter j(out);
+    const auto& d = res.design;
+    j.beginObject();
+    j.key("design").beginObject().field("scene", d.sceneFile).field("seed", static_cast<unsigned long long>(d.seed))
+        .field("runs_per_realisation", d.runs).field("realisations", d.realisations).field("baseline_runs", d.baselineRuns)
+        .field("bootstrap_replicates", res.bootstrap.replicates).field("confidence", res.bootstrap.confidence);
+    j.key("stands").beginArray();
+    for (const auto& s : d.stands) j.value(s.name);
+    j.endArray().endObject();
+
+    std::vector<double> baseline;
+    for (const auto& r : res.baseline) baseline.push_back(r.runoutM);
+    j.key("baseline").beginObject().field("dist50_m", res.baselineDist50).field("runs", static_cast<int>(res.baseline.size()));
+    j.key("runout_quantiles_m").beginObject();
+    for (int p : {10, 25, 50, 75, 90}) j.field("p" + std::to_string(p), dem::quantile(baseline, p / 100.0));
+    j.endObject();
+    stopReasonsField(j, res.baseline);
+    j.endObject();
+
+    j.key("stands").beginArray();
+    for (const auto& r : res.stands) {
+        j.beginObject().field("name", r.name).field("structure", structureCode(r.structure)).field("pf50", r.pf50);
+        j.numbers("pf50_ci", {r.pf50Ci.low, r.pf50Ci.high});
+        j.field("dist50_m", r.dist50);
+        summaryFields(j, r.inventory);
+        j.field("realisations", static_cast<int>(r.runs.size())).field("runs", d.runs)
+            .field("runs_pooled", static_cast<int>(pooled(r).size()))
+            .field("rank_pf50", r.rankPf50).field("rank_basal_area", r.rankBasalArea);
+        j.numbers("pf50_realisations", r.pf50PerRealisation);
+        j.key("virtual_forests").beginArray();
+        for (const auto& f : r.forests) {
+            j.beginObject().field("stems", static_cast<unsigned long>(f.stems));
+            summaryFields(j, f);
+            j.endObject();
+        }
+        j.endArray();
+        stopReasonsField(j, pooled(r));
+        j.endObject();
+    }
+    j.endArray();
+
+    j.key("rankings").beginObject();
+    for (auto structure : assessedStructures()) {
+        // Stand names from the least to the most protective, and from the smallest to the largest G.
+        std::vector<const StructureAssessment*> rows;
+        for (const auto& r : res.stands)
+            if (r.structure == structure) rows.push_back(&r);
+        j.key(structureCode(structure)).beginObject();
+        for (const auto& [key, rankOf] : {std::pair<std::string, int StructureAssessment::*>{"by_pf50", &StructureAssessment::rankPf50},
+                                          {"by_basal_area", &StructureAssessment::rankBasalArea}}) {
+            auto sorted = rows;
+            std::stable_sort(sorted.begin(), sorted.end(), [rankOf = rankOf](auto* a, auto* b) { return a->*rankOf < b->*rankOf; });
+            j.key(key).beginArray();
+            for (auto* r : sorted) j.value(r->name);
+            j.endArray();
+        }
+        j.endObject();
+    }
+    j.endObject();
+
+    j.key("correlations").beginArray();
+    for (const auto& c : res.correlations)
+        j.beginObject().field("structure", structureCode(c.structure)).field("stands", static_cast<unsigned long>(c.stands))
+            .field("pearson_pf50_basal_area", c.basalArea).field("pearson_pf50_mean_dbh", c.meanDbh)
+            .field("pearson_pf50_stems_per_ha", c.stemsPerHa).endObject();
+    j.endArray();
+    j.endObject();
+    out << '\n';
+}
+
+FigureSet writeReport(const std::string& reportDir, const AssessmentResults& results) {
+    fs::create_directories(reportDir);
+    writeTables(reportDir, results);
+    const FigureSet figures = drawFigures(reportDir, results);
+    writeMarkdown(reportDir + "/report.md", results, figures);
+    return figures;
+}
+
+}  // namespace sylva::assess

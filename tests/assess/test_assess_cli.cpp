@@ -1,0 +1,99 @@
+// `sylvarock assess` end to end: a small campaign on a short slope (1 stand, K = 1, M = 4, B = 6) writes
+// results.json and the report; bad input is a clear error (exit 2), never a crash.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <regex>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+class AssessCli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        root_ = fs::temp_directory_path() /
+                ("sylvarock-assess-cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::remove_all(root_);
+        fs::create_directories(root_);
+    }
+    void TearDown() override { fs::remove_all(root_); }
+    // Runs the CLI with `args`; returns its exit status, stderr in err_.
+    int run(const std::string& args) {
+        const fs::path errFile = root_ / "stderr.txt";
+        const std::string cmd = std::string(SYLVAROCK_CLI) + " assess " + args + " > " + (root_ / "stdout.txt").string() + " 2> " +
+                                errFile.string();
+        const int status = std::system(cmd.c_str());
+        err_ = slurp(errFile);
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    }
+    std::string smallCampaign(const std::string& out, int runs = 4) const {
+        return "--stand " + std::string(SYLVAROCK_DATA) + "/stands/GR1 --scene " + std::string(SYLVAROCK_TEST_DATA) +
+               "/../assess/data/short-scene.ini --runs " + std::to_string(runs) + " --realisations 1 --baseline-runs 6 --seed 9 --bootstrap 200 --out " +
+               (root_ / out).string();
+    }
+    fs::path root_;
+    std::string err_;
+};
+
+TEST_F(AssessCli, SmallCampaignWritesResultsAndReport) {
+    ASSERT_EQ(run(smallCampaign("out")), 0) << err_;
+    const std::string json = slurp(root_ / "out/results.json");
+    // One row per structure, each with a PF50 inside its interval.
+    const std::regex row("\"name\": \"GR1\",\\s*\"structure\": \"(A|NA)\",\\s*\"pf50\": ([-0-9.e]+),\\s*"
+                         "\"pf50_ci\": \\[\\s*([-0-9.e]+),\\s*([-0-9.e]+)\\s*\\]");
+    int rows = 0;
+    for (auto it = std::sregex_iterator(json.begin(), json.end(), row); it != std::sregex_iterator(); ++it, ++rows) {
+        const double pf = std::stod((*it)[2]), low = std::stod((*it)[3]), high = std::stod((*it)[4]);
+        EXPECT_LE(low, pf) << (*it)[1];
+        EXPECT_LE(pf, high) << (*it)[1];
+    }
+    EXPECT_EQ(rows, 2) << json;
+    EXPECT_NE(json.find("\"baseline\""), std::string::npos);
+    EXPECT_NE(json.find("\"rank_pf50\""), std::string::npos);
+    const std::string report = slurp(root_ / "out/report/report.md");
+    EXPECT_NE(report.find("| GR1 |"), std::string::npos) << report;
+    for (const char* table : {"stands.csv", "forests.csv", "correlations.csv", "runs.csv"})
+        EXPECT_TRUE(fs::exists(root_ / "out/report" / table)) << table;
+    // The figures need gnuplot (a declared dependency); without it the report says why they are missing.
+    if (std::system("gnuplot --version > /dev/null 2>&1") == 0) {
+        for (const char* svg : {"runout_cdf.svg", "pf50.svg", "pf50_dendrometry.svg", "stop_map.svg"}) {
+            EXPECT_TRUE(fs::exists(root_ / "out/report" / svg)) << svg;
+            EXPECT_NE(report.find(std::string("](") + svg + ")"), std::string::npos) << svg;
+        }
+    } else {
+        EXPECT_NE(report.find("Figures missing"), std::string::npos);
+    }
+}
+
+TEST_F(AssessCli, SecondRunNeedsResumeAndThenRedoesNothing) {
+    ASSERT_EQ(run(smallCampaign("out")), 0) << err_;
+    const std::string first = slurp(root_ / "out/results.json");
+    EXPECT_EQ(run(smallCampaign("out")), 2);
+    EXPECT_NE(err_.find("use --resume"), std::string::npos) << err_;
+    ASSERT_EQ(run(smallCampaign("out") + " --resume --threads 1"), 0) << err_;
+    EXPECT_NE(err_.find("14 of 14 runs stored"), std::string::npos) << err_;
+    EXPECT_EQ(slurp(root_ / "out/results.json"), first);
+}
+
+TEST_F(AssessCli, BadInputsAreClearErrors) {
+    EXPECT_EQ(run("--stand " + (root_ / "nowhere/XX1").string() + " --scene x.ini --out " + (root_ / "o").string()), 2);
+    EXPECT_NE(err_.find("XX1_stems.csv does not exist"), std::string::npos) << err_;
+    EXPECT_EQ(run(smallCampaign("o", 0)), 2);
+    EXPECT_NE(err_.find("--runs must be at least 1"), std::string::npos) << err_;
+    EXPECT_EQ(run("--stand " + std::string(SYLVAROCK_DATA) + "/stands/GR1 --stand " + std::string(SYLVAROCK_DATA) +
+                  "/stands/GR1 --scene " + std::string(SYLVAROCK_DATA) + "/scenes/no-forest.ini --out " + (root_ / "o").string()),
+              2);
+    EXPECT_NE(err_.find("given twice"), std::string::npos) << err_;
+    EXPECT_FALSE(fs::exists(root_ / "o"));  // nothing is written before the inputs are known to be good
+}
+
+}  // namespace

@@ -1,0 +1,124 @@
+// An assessment campaign (libassess/Assessment.hpp) interrupted anywhere resumes to the very results
+// of an uninterrupted one, runs only what is missing, and refuses a directory or design it cannot trust.
+// Small campaigns on a short slope, so each takes about a second.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "libassess/Assessment.hpp"
+#include "libassess/Report.hpp"
+#include "libstand/InputError.hpp"
+
+namespace fs = std::filesystem;
+using namespace sylva::assess;
+
+namespace {
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+void spit(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary | std::ios::trunc) << text; }
+
+// Drops the last `lines` complete lines of a file.
+void dropLastLines(const fs::path& p, int lines) {
+    std::string t = slurp(p);
+    for (int i = 0; i < lines; ++i) t.erase(t.rfind('\n', t.size() - 2) + 1);
+    spit(p, t);
+}
+
+class AssessResume : public ::testing::Test {
+protected:
+    void SetUp() override {
+        root_ = fs::temp_directory_path() /
+                ("sylvarock-assess-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::remove_all(root_);
+    }
+    void TearDown() override { fs::remove_all(root_); }
+
+    AssessmentOptions options(const std::string& out, int threads) const {
+        AssessmentOptions o;
+        o.design.stands.push_back(standFromPrefix(std::string(SYLVAROCK_DATA) + "/stands/GR1"));
+        o.design.sceneFile = std::string(SYLVAROCK_TEST_DATA) + "/../assess/data/short-scene.ini";
+        o.design.runs = 4;
+        o.design.realisations = 2;
+        o.design.baselineRuns = 6;
+        o.design.seed = 3;
+        o.outDir = (root_ / out).string();
+        o.threads = threads;
+        o.bootstrapReplicates = 200;
+        return o;
+    }
+    // Runs (or resumes) the campaign and writes results.json; returns how many runs were simulated.
+    int assess(AssessmentOptions o) const {
+        int simulated = 0;
+        o.onRunDone = [&simulated](const std::string&, int, int) { ++simulated; };
+        writeResultsJson(o.outDir + "/results.json", runAssessment(o));
+        return simulated;
+    }
+    fs::path root_;
+};
+
+TEST_F(AssessResume, InterruptedCampaignResumesToIdenticalResults) {
+    EXPECT_EQ(assess(options("whole", 1)), 6 + 2 * 2 * 4);
+    EXPECT_EQ(assess(options("cut", 2)), 6 + 2 * 2 * 4);
+    const fs::path cut = root_ / "cut";
+    // What kills leave: a line cut in the middle, runs never written, a realisation never started.
+    const std::string a1 = slurp(cut / "runs/GR1_A_001.csv");
+    spit(cut / "runs/GR1_A_001.csv", a1.substr(0, a1.size() - 30));
+    dropLastLines(cut / "runs/baseline.csv", 2);
+    fs::remove(cut / "runs/GR1_NA_002.csv");
+    fs::remove(cut / "forests/GR1_NA_002.csv");
+    fs::remove(cut / "results.json");
+
+    AssessmentOptions resume = options("cut", 2);
+    resume.resume = true;
+    EXPECT_EQ(assess(resume), 1 + 2 + 4);  // only the missing runs are simulated
+    // Byte for byte, whatever the threads (1 then 2) and the interruptions.
+    EXPECT_EQ(slurp(cut / "results.json"), slurp(root_ / "whole/results.json"));
+    EXPECT_EQ(slurp(cut / "forests/GR1_NA_002.csv"), slurp(root_ / "whole/forests/GR1_NA_002.csv"));
+
+    // Resuming a finished campaign simulates nothing and changes nothing.
+    EXPECT_EQ(assess(resume), 0);
+    EXPECT_EQ(slurp(cut / "results.json"), slurp(root_ / "whole/results.json"));
+}
+
+TEST_F(AssessResume, MismatchedDesignIsRefused) {
+    assess(options("c", 2));
+    AssessmentOptions more = options("c", 2);
+    more.resume = true;
+    more.design.runs = 5;
+    try {
+        runAssessment(more);
+        FAIL() << "a resume with other runs was accepted";
+    } catch (const sylva::InputError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("design.txt:4"), std::string::npos) << what;
+        EXPECT_NE(what.find("runs_per_realisation = 4"), std::string::npos) << what;
+        EXPECT_NE(what.find("runs_per_realisation = 5"), std::string::npos) << what;
+    }
+    AssessmentOptions otherSeed = options("c", 2);
+    otherSeed.resume = true;
+    otherSeed.design.seed = 4;
+    EXPECT_THROW(runAssessment(otherSeed), sylva::InputError);
+}
+
+TEST_F(AssessResume, NonEmptyOutputWithoutResumeIsRefused) {
+    fs::create_directories(root_ / "busy");
+    spit(root_ / "busy/notes.txt", "someone's file\n");
+    try {
+        runAssessment(options("busy", 1));
+        FAIL() << "a non-empty --out was accepted";
+    } catch (const sylva::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("use --resume"), std::string::npos) << e.what();
+    }
+    AssessmentOptions resume = options("busy", 1);
+    resume.resume = true;  // and it is no campaign to resume either
+    EXPECT_THROW(runAssessment(resume), sylva::InputError);
+    EXPECT_EQ(slurp(root_ / "busy/notes.txt"), "someone's file\n");
+}
+
+}  // namespace

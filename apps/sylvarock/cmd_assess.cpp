@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "Cli.hpp"
+#include "ProgressBar.hpp"
 #include "libassess/Assessment.hpp"
 #include "libassess/CampaignPlan.hpp"
 #include "libassess/Report.hpp"
@@ -16,21 +17,6 @@ namespace sylva::cli {
 namespace {
 
 // One line on a terminal, redrawn after each run: which campaign, how far, how long left.
-class Progress {
-public:
-    explicit Progress(bool enabled) : enabled_(enabled), start_(std::chrono::steady_clock::now()) {}
-    void update(const std::string& campaign, int done, int total) {
-        if (!enabled_) return;
-        const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-        std::fprintf(stderr, "\r  runs %d/%d (%s) %.0f s, about %.0f s left   ", done, total, campaign.c_str(), s,
-                     s * (total - done) / done);
-        if (done == total) std::fputc('\n', stderr);
-    }
-
-private:
-    bool enabled_;
-    std::chrono::steady_clock::time_point start_;
-};
 
 int runAssess(int argc, const char* const* argv) {
     po::options_description o("assess");
@@ -74,8 +60,8 @@ int runAssess(int argc, const char* const* argv) {
     a.bootstrapReplicates = vm["bootstrap"].as<int>();
     a.confidence = confidence;
     a.onNote = [](const std::string& text) { std::cerr << "sylvarock assess: " << text << "\n"; };
-    Progress progress(stderrIsTerminal());
-    a.onRunDone = [&progress](const std::string& campaign, int done, int total) { progress.update(campaign, done, total); };
+    ProgressBar progress(stderrIsTerminal());
+    a.onRunDone = [&progress](const std::string& campaign, int done, int total) { progress.update(done, total, campaign); };
 
     const auto t0 = std::chrono::steady_clock::now();
     const assess::AssessmentResults results = assess::runAssessment(a);

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "Cli.hpp"
+#include "ProgressBar.hpp"
 #include "Gnuplot.hpp"
 #include "libdem/Campaign.hpp"
 #include "libdem/CampaignSummary.hpp"
@@ -38,22 +39,6 @@ void drawFigures(const std::string& dir, const dem::Scene& scene, const std::vec
     plotWithGnuplot(gp.str(), "run-out figures");
 }
 
-class ProgressBar {
-public:
-    explicit ProgressBar(bool enabled) : enabled_(enabled), start_(std::chrono::steady_clock::now()) {}
-    void update(int done, int total) {
-        if (!enabled_) return;
-        const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-        const int width = 30, filled = total ? width * done / total : width;
-        std::fprintf(stderr, "\r  runs %d/%d [%s%s] %.1f s, about %.0f s left ", done, total, std::string(filled, '#').c_str(),
-                     std::string(width - filled, '.').c_str(), s, done ? s * (total - done) / done : 0.0);
-        if (done == total) std::fputc('\n', stderr);
-    }
-
-private:
-    bool enabled_;
-    std::chrono::steady_clock::time_point start_;
-};
 
 int runSimulate(int argc, const char* const* argv) {
     po::options_description o("simulate");

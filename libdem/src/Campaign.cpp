@@ -9,14 +9,12 @@
 
 namespace sylva::dem {
 
-namespace {
 std::uint64_t splitmix64(std::uint64_t x) {
     x += 0x9E3779B97F4A7C15ULL;
     x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ULL;
     x = (x ^ (x >> 27)) * 0x94D049BB133111EBULL;
     return x ^ (x >> 31);
 }
-}  // namespace
 
 std::uint64_t runSeed(std::uint64_t campaignSeed, int run) {
     // gsl's mt19937 takes an unsigned long seed; keep it in 32 bits so it means the same everywhere.

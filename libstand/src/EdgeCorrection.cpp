@@ -14,13 +14,7 @@ namespace {
 
 using Vec = Eigen::Vector2d;
 
-double cross(const Vec& a, const Vec& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-double polygonArea(const std::vector<Vec>& p) {
-    double twice = 0;
-    for (std::size_t i = 0; i < p.size(); ++i) twice += cross(p[i], p[(i + 1) % p.size()]);
-    return 0.5 * twice;
-}
+double cross(const Vec& a, const Vec& b) { return cross2(a, b); }
 
 // Area of the intersection of two convex counter-clockwise polygons, the second shifted by v
 // (Sutherland-Hodgman: clip the first by each edge of the second).
@@ -39,7 +33,7 @@ double convexOverlap(const std::vector<Vec>& subject, const std::vector<Vec>& cl
         }
         poly.swap(next);
     }
-    return poly.size() < 3 ? 0.0 : polygonArea(poly);
+    return poly.size() < 3 ? 0.0 : signedArea(poly);
 }
 
 // Convex pieces of a simple polygon (Hertel-Mehlhorn via CGAL): the overlap of two polygons is then a

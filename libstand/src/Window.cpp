@@ -10,17 +10,18 @@
 #include "libstand/InputError.hpp"
 
 namespace sylva::stand {
+
+double signedArea(const std::vector<Eigen::Vector2d>& v) {
+    double twice = 0;
+    for (std::size_t i = 0; i < v.size(); ++i) twice += cross2(v[i], v[(i + 1) % v.size()]);
+    return 0.5 * twice;
+}
+
 namespace {
 
 using Vec = Eigen::Vector2d;
 
-double cross(const Vec& a, const Vec& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-double signedArea(const std::vector<Vec>& v) {
-    double twice = 0;
-    for (std::size_t i = 0; i < v.size(); ++i) twice += cross(v[i], v[(i + 1) % v.size()]);
-    return 0.5 * twice;
-}
+double cross(const Vec& a, const Vec& b) { return cross2(a, b); }
 
 double segmentDistance(const Vec& p, const Vec& a, const Vec& b) {
     const Vec ab = b - a;

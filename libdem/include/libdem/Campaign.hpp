@@ -9,6 +9,10 @@
 
 namespace sylva::dem {
 
+// splitmix64's finaliser: spreads every input bit over the output, so neighbouring inputs give
+// unrelated outputs (used to derive seeds).
+std::uint64_t splitmix64(std::uint64_t x);
+
 std::uint64_t runSeed(std::uint64_t campaignSeed, int run);
 
 struct CampaignOptions {

@@ -7,6 +7,11 @@
 
 namespace sylva::stand {
 
+// z of the cross product of two plane vectors.
+inline double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+// Area of a polygon ring, positive when counter-clockwise (shoelace formula).
+double signedArea(const std::vector<Eigen::Vector2d>& ring);
+
 class Window {
 public:
     // Throws InputError if xmax <= xmin or ymax <= ymin (a degenerate window).

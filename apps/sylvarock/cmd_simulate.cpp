@@ -45,7 +45,7 @@ int runSimulate(int argc, const char* const* argv) {
     std::vector<std::string> sets;
     o.add_options()
         ("scene", po::value<std::string>(), "scene INI file (terrain, block, contact laws, release, stop); defaults are the paper's Table 2")
-        ("runs", po::value<int>()->default_value(100), "number of block runs")
+        ("runs", po::value<int>(), "number of block runs (default 100; 1 for a single-tree launch)")
         ("seed", po::value<unsigned long>()->default_value(1), "campaign seed; run i uses a seed derived from (seed, i)")
         ("threads", po::value<int>()->default_value(0), "worker threads (0: all cores); results do not depend on it")
         ("out", po::value<std::string>(), "output directory (runs.csv, summary.json, impacts.csv, figures)")
@@ -70,8 +70,8 @@ int runSimulate(int argc, const char* const* argv) {
     if (vm.count("block")) sets.insert(sets.begin(), "block.shape=" + vm["block"].as<std::string>());
     if (vm.count("forest"))
         sets.insert(sets.begin(), "forest.file=" + std::filesystem::absolute(vm["forest"].as<std::string>()).string());
-    const int runs = vm["runs"].as<int>();
-    if (runs < 1) throw InputError("--runs must be at least 1");
+    const int runs = vm.count("runs") ? vm["runs"].as<int>() : -1;
+    if (vm.count("runs") && runs < 1) throw InputError("--runs must be at least 1");
 
     const std::string out = vm["out"].as<std::string>();
     std::filesystem::create_directories(out);
@@ -84,7 +84,7 @@ int runSimulate(int argc, const char* const* argv) {
     std::cerr << "\n";
 
     dem::CampaignOptions c;
-    c.runs = runs;
+    c.runs = runs > 0 ? runs : (scene.config().launch.enabled ? 1 : 100);
     c.seed = vm["seed"].as<unsigned long>();
     c.threads = vm["threads"].as<int>();
     c.run.recordTrajectory = vm["trajectory"].as<bool>();
@@ -97,6 +97,7 @@ int runSimulate(int argc, const char* const* argv) {
     dem::writeRunsCsv(out + "/runs.csv", results);
     dem::writeSummaryJson(out + "/summary.json", s, wall, vm["scene"].as<std::string>());
     if (scene.forested()) dem::writeImpactsCsv(out + "/impacts.csv", results);
+    if (scene.config().launch.enabled) dem::writeImpactEnergyJson(out + "/energy.json", results.front());
     if (c.run.recordTrajectory) dem::writeTrajectories(out + "/trajectories", results);
     if (!vm["no-figures"].as<bool>()) drawFigures(out, scene, results);
 

@@ -92,6 +92,33 @@ void writeImpactsCsv(const std::string& path, const std::vector<RunResult>& runs
         }
 }
 
+void writeImpactEnergyJson(const std::string& path, const RunResult& r) {
+    auto out = openOut(path);
+    JsonWriter j(out);
+    const ForestEnergy& f = r.forestEnergy;
+    j.beginObject();
+    j.field("impacts", static_cast<int>(r.impacts.size()));
+    if (!r.impacts.empty()) {
+        const TreeImpact& i = r.impacts.front();
+        j.field("kinetic_before_j", i.energyBefore).field("kinetic_after_j", i.energyAfter);
+        j.field("speed_before_m_s", i.speedBefore).field("speed_after_m_s", i.speedAfter);
+        j.field("impact_height_m", i.height).field("eccentricity", i.eccentricity);
+        j.field("stem_broken", i.stemBroken).field("root_yielded", i.rootYielded);
+    } else {
+        j.field("stem_broken", false).field("root_yielded", false);
+    }
+    j.key("dissipated_j").beginObject();
+    j.field("bending_plasticity", f.bendingPlasticity).field("bending_damping", f.bendingDamping);
+    j.field("root_plasticity", f.rootPlasticity).field("rupture", f.rupture);
+    j.field("contact_friction", f.contactFriction).field("soil_damping", r.energy.contactDamping);
+    j.field("soil_friction", r.energy.friction).field("left_vibrating_in_stems", f.frozen);
+    j.endObject();
+    j.field("created_by_unloading_law_j", f.unloadingGain);
+    j.field("energy_imbalance", r.energy.imbalance);
+    j.endObject();
+    out << "\n";
+}
+
 void writeSummaryJson(const std::string& path, const CampaignSummary& s, double wallSeconds, const std::string& scene) {
     auto out = openOut(path);
     JsonWriter j(out);

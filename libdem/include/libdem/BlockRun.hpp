@@ -25,6 +25,14 @@ struct EnergyBudget {
     double imbalance = 0;        // largest |total - initial| seen, relative to the energy converted
 };
 
+// Where the energy the forest took went, J (the forest's part of the run's budget).
+struct ForestEnergy {
+    double bendingPlasticity = 0, bendingDamping = 0, rootPlasticity = 0, rupture = 0;
+    double unloadingGain = 0;   // created by Fig. 3 at a connection's first yield (docs/model-stems.md)
+    double contactFriction = 0; // block/stem, stem/stem, stem/soil sliding
+    double frozen = 0;          // vibration of stems put back to sleep
+};
+
 // One block/tree impact: what the block had before and after, and what became of the tree.
 struct TreeImpact {
     long tree = 0;              // stem id in the forest file
@@ -48,6 +56,7 @@ struct RunResult {
     double meanDt = 0;
     EnergyBudget energy;
     std::vector<TreeImpact> impacts;
+    ForestEnergy forestEnergy;
     std::vector<TrajectorySample> trajectory;  // filled when asked for
 };
 

@@ -28,6 +28,9 @@ CampaignSummary summarise(const std::vector<RunResult>& runs);
 double quantile(std::vector<double> values, double p);
 
 void writeRunsCsv(const std::string& path, const std::vector<RunResult>& runs);
+// The energy budget of a single-tree launch (a tree-mechanics check): the block's kinetic energy
+// before and after the impact, each dissipation term, whether the stem broke or the root yielded.
+void writeImpactEnergyJson(const std::string& path, const RunResult& run);
 // One row per block/tree impact of every run.
 void writeImpactsCsv(const std::string& path, const std::vector<RunResult>& runs);
 void writeSummaryJson(const std::string& path, const CampaignSummary& s, double wallSeconds, const std::string& scene);

@@ -191,9 +191,9 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
                 BlockStemTouch* touch = nullptr;
                 for (auto& bt : blockTouches_)
                     if (bt.blockSphere == i && bt.tree == a.tree) touch = &bt;
-                if (touch && touch->touching && touch->geometry.overlap >= overlap) continue;
+                if (touch && touch->touching && touch->rawOverlap >= overlap) continue;
                 if (!touch) {
-                    blockTouches_.push_back(BlockStemTouch{i, a.tree, c, t, startedAt(overlap), ContactGeometry{}, false});
+                    blockTouches_.push_back(BlockStemTouch{i, a.tree, c, t, overlap, startedAt(overlap), ContactGeometry{}, false});
                     touch = &blockTouches_.back();
                 }
                 ContactGeometry& g = touch->geometry;
@@ -206,6 +206,7 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
                 g.radiusB = r;
                 touch->connection = c;
                 touch->t = t;
+                touch->rawOverlap = overlap;
                 touch->touching = true;
             }
         }
@@ -443,6 +444,11 @@ void ForestMotion::sleep(const RigidBody& block, double t) {
         slept_.rupture += s.ledger.rupture;
         slept_.unloadingGain += s.ledger.unloadingGain;
         const std::uint32_t tree = a.tree;
+        // Its springs on the soil and on neighbours go with it: their energy is booked as frozen.
+        for (const auto& c : soilTouches_)
+            if (c.tree == tree) slept_.frozen += stemSoilLaw_->storedEnergy(c.geometry, c.history);
+        for (const auto& c : stemTouches_)
+            if (!c.ignored && (c.treeA == tree || c.treeB == tree)) slept_.frozen += stemStemLaw_->storedEnergy(c.geometry, c.history);
         soilTouches_.erase(std::remove_if(soilTouches_.begin(), soilTouches_.end(), [tree](const StemSoilTouch& c) { return c.tree == tree; }),
                            soilTouches_.end());
         stemTouches_.erase(std::remove_if(stemTouches_.begin(), stemTouches_.end(),

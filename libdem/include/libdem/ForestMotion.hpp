@@ -65,7 +65,8 @@ private:
     struct BlockStemTouch {
         std::uint32_t blockSphere, tree;
         std::size_t connection;
-        double t;  // where along the connection
+        double t;           // where along the connection
+        double rawOverlap;  // before the onset offset: what picks the deepest connection
         ContactHistory history;
         ContactGeometry geometry;
         bool touching;

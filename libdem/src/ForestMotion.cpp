@@ -94,7 +94,7 @@ void ForestMotion::wake(std::uint32_t tree, double t) {
     }
     const double step = stem.stableTimeStep();
     const bool broken = anyBroken(stem);
-    awake_.push_back(AwakeStem{tree, std::move(stem), {}, step, t, t, false, broken});
+    awake_.push_back(AwakeStem{tree, std::move(stem), {}, step, t, t, false, broken, {}});
 }
 
 void ForestMotion::detect(const RigidBody& block, const std::vector<Vec3>& centres, double reachAhead, double t) {

@@ -24,6 +24,31 @@ Vec3 rotationVector(Quat q) {
     return 2 * std::atan2(s, q.w()) / s * q.vec();
 }
 
+Eigen::Matrix3d skew(const Vec3& v) {
+    Eigen::Matrix3d m;
+    m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+    return m;
+}
+
+// Jacobians of the rotation vector. A small turn u applied on the left of the rotation exp(theta)
+// moves theta by inverseLeftJacobian(theta) u; a change d of theta turns exp(theta) on the right
+// by rightJacobian(theta) d. With them the springs' torques are the exact derivatives of their
+// energy, at any relative rotation (to first order in theta they are the identity).
+Eigen::Matrix3d inverseLeftJacobian(const Vec3& theta) {
+    const double a = theta.norm();
+    const Eigen::Matrix3d k = skew(theta);
+    const double c = a < 1e-4 ? 1.0 / 12 + a * a / 720 : 1 / (a * a) - (1 + std::cos(a)) / (2 * a * std::sin(a));
+    return Eigen::Matrix3d::Identity() - 0.5 * k + c * k * k;
+}
+
+Eigen::Matrix3d rightJacobian(const Vec3& theta) {
+    const double a = theta.norm();
+    const Eigen::Matrix3d k = skew(theta);
+    const double b = a < 1e-4 ? 0.5 - a * a / 24 : (1 - std::cos(a)) / (a * a);
+    const double c = a < 1e-4 ? 1.0 / 6 - a * a / 120 : (a - std::sin(a)) / (a * a * a);
+    return Eigen::Matrix3d::Identity() - b * k + c * k * k;
+}
+
 // Half of the rotation whose rotation vector is theta.
 Quat halfTurn(const Vec3& theta) {
     const double angle = theta.norm();
@@ -137,26 +162,33 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         }
         stored += linear + k.bending.storedEnergy();
 
-        const Vec3 rate = frame.conjugate() * (angularVelocity[b] - angularVelocity[a]);
+        // theta moves at inverseLeftJacobian(theta) R_a^T (omega_b - omega_a); the moment M conjugate to
+        // theta acts on a as R_a J^-T M and on b as the opposite, so its power is exactly -M . dtheta/dt.
+        const Eigen::Matrix3d toTheta = inverseLeftJacobian(theta);
+        const Eigen::Matrix3d ra = orientation[a].toRotationMatrix();
+        const Vec3 rate = toTheta * (ra.transpose() * (angularVelocity[b] - angularVelocity[a]));
         const Vec2 damping = k.bending.dampingMoment(rate.head<2>());  // Eqs. 7-8
         ledger.bendingDamping += damping.dot(rate.head<2>()) * dt;
 
-        // Spring forces act at the connection's middle: on a the force f and, with the lever half
-        // the chord, the torque chord/2 x f; on b the opposite force at the same point.
-        const Vec3 f = frame * Vec3(k.shear * stretch.x(), k.shear * stretch.y(), k.axial * stretch.z());
         const Vec2& mb = k.bending.moment();
-        const Vec3 moment = frame * Vec3(mb.x() + damping.x(), mb.y() + damping.y(), k.twist * theta.z());
-        const Vec3 lever = 0.5 * chord.cross(f);
+        const Vec3 moment = ra * (toTheta.transpose() * Vec3(mb.x() + damping.x(), mb.y() + damping.y(), k.twist * theta.z()));
+        // The axial and shear springs pull the nodes apart along the chord (f on a, -f on b) and,
+        // through their frame halfway between a and b, turn it: chord x f in all, shared by the nodes as
+        // the frame follows them (exactly half each for small theta).
+        const Vec3 f = frame * Vec3(k.shear * stretch.x(), k.shear * stretch.y(), k.axial * stretch.z());
+        const Eigen::Matrix3d frameFromB = 0.5 * frame.toRotationMatrix() * rightJacobian(0.5 * theta) * toTheta * ra.transpose();
+        const Vec3 turn = chord.cross(f);
+        const Vec3 onB = frameFromB.transpose() * turn;
         force[a] += f;
         force[b] -= f;
-        torque[a] += lever + moment;
-        torque[b] += lever - moment;
+        torque[a] += turn - onB + moment;
+        torque[b] += onB - moment;
     }
     if (support_ == StemFoot::RootSpring) {
         const Vec3 theta = rotationVector(footRest_.conjugate() * orientation[0]);
         ledger.rootPlasticity += root_.rotate(theta - rootAngle_);  // Eqs. 9-10
         rootAngle_ = theta;
-        torque[0] -= footRest_ * halfTurn(theta) * root_.moment();
+        torque[0] -= footRest_ * (inverseLeftJacobian(theta).transpose() * root_.moment());
         stored += root_.storedEnergy();
     }
     elasticEnergy_ = stored;

@@ -217,13 +217,23 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
 
 void ForestMotion::detectStemStem() {
     for (auto& touch : stemTouches_) touch.touching = false;
+    // Boxes around each awake stem's nodes, widened by its thickest radius: most pairs of standing
+    // stems are told apart by these alone.
+    boxes_.resize(awake_.size());
+    for (std::size_t k = 0; k < awake_.size(); ++k) {
+        const Stem& s = awake_[k].stem;
+        Eigen::AlignedBox3d box;
+        for (const Vec3& p : s.position) box.extend(p);
+        const double r = 0.5 * s.diameterAt(0);
+        boxes_[k] = Eigen::AlignedBox3d(box.min() - Vec3::Constant(r), box.max() + Vec3::Constant(r));
+    }
     for (std::size_t ia = 0; ia < awake_.size(); ++ia)
         for (std::size_t ib = ia + 1; ib < awake_.size(); ++ib) {
+            if (!boxes_[ia].intersects(boxes_[ib])) continue;
             const AwakeStem& A = awake_[ia];
             const AwakeStem& B = awake_[ib];
             const PlacedTree& ta = trees_.tree(A.tree);
             const PlacedTree& tb = trees_.tree(B.tree);
-            if (horizontalDistance(ta.foot, tb.foot) > ta.geometry.height + tb.geometry.height) continue;
             for (std::size_t ca = 0; ca < A.stem.connectionCount(); ++ca) {
                 if (A.stem.broken(ca)) continue;
                 const Vec3 &a0 = A.stem.position[ca], &a1 = A.stem.position[ca + 1];

@@ -3,6 +3,7 @@
 // then a stem is built into the simulation (woken), integrated while the block can touch it, and
 // put back to sleep once the block has left it (its deformed or broken shape is kept). The stiff
 // stem time step is only paid while some stem is awake.
+#include <Eigen/Geometry>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -116,6 +117,7 @@ private:
     std::vector<OpenImpact> impacts_;
     std::unordered_map<std::uint32_t, std::size_t> openImpactOf_;  // tree -> index in impacts_
     std::vector<std::uint32_t> nearTrees_, nearSoil_;
+    std::vector<Eigen::AlignedBox3d> boxes_;  // per awake stem, this step (detectStemStem)
     DissipationLedger contactLedger_;
     ForestLedger slept_;        // ledgers of stems that went to sleep
     double frozenElastic_ = 0, frozenPotential_ = 0, injected_ = 0;

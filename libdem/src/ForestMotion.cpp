@@ -118,13 +118,26 @@ void ForestMotion::detect(const RigidBody& block, const std::vector<Vec3>& centr
     }
     wakeNeighbours();
     detectBlockStem(block, centres);
+    for (auto& [tree, index] : openImpactOf_) {
+        impacts_[index].wasInContact = impacts_[index].inContact;
+        impacts_[index].inContact = false;
+    }
     for (auto& touch : blockTouches_)
         if (touch.touching) {
             AwakeStem* a = awake(touch.tree);
             a->lastBlockContact = t;
             if (!openImpactOf_.count(touch.tree)) openImpact(block, touch, t);
+            impacts_[openImpactOf_.at(touch.tree)].inContact = true;
             a->touched = true;
         }
+    // The block's state when its contact with a stem ends is the impact's "after" (a later contact
+    // with the same stem, before it sleeps, moves it on).
+    for (auto& [tree, index] : openImpactOf_) {
+        OpenImpact& i = impacts_[index];
+        if (i.inContact || !i.wasInContact) continue;
+        i.record.speedAfter = block.velocity.norm();
+        i.record.energyAfter = block.kineticEnergy();
+    }
     detectStemStem();
     detectStemSoil();
 }
@@ -484,13 +497,15 @@ void ForestMotion::openImpact(const RigidBody& block, const BlockStemTouch& touc
     const double lateral = v.norm() > 0 ? (v.x() * w.y() - v.y() * w.x()) / v.norm() : 0;
     r.eccentricity = std::clamp(lateral / (block.boundingRadius() + 0.5 * p.geometry.dbh), -1.0, 1.0);
     openImpactOf_[touch.tree] = impacts_.size();
-    impacts_.push_back({r, true});
+    impacts_.push_back({r, true, true, false});
 }
 
 void ForestMotion::closeImpact(std::size_t index, const RigidBody& block) {
     OpenImpact& i = impacts_[index];
-    i.record.speedAfter = block.velocity.norm();
-    i.record.energyAfter = block.kineticEnergy();
+    if (i.inContact) {  // still touching when the run ends
+        i.record.speedAfter = block.velocity.norm();
+        i.record.energyAfter = block.kineticEnergy();
+    }
     for (std::uint32_t tree = 0; tree < trees_.size(); ++tree) {
         if (trees_.tree(tree).id != i.record.tree) continue;
         const Stem* s = nullptr;

@@ -89,6 +89,8 @@ private:
     struct OpenImpact {
         TreeImpact record;
         bool open;
+        bool inContact;     // the block touches the stem now; "after" is taken when this ends
+        bool wasInContact;  // ... and did at the previous step
     };
 
     void wake(std::uint32_t tree, double t);

@@ -151,10 +151,10 @@ void ForestMotion::detect(const RigidBody& block, const std::vector<Vec3>& centr
 void ForestMotion::wakeNeighbours() {
     if (++sinceNeighbourCheck_ < kNeighbourCheckInterval) return;
     sinceNeighbourCheck_ = 0;
-    const std::size_t n = awake_.size();
-    for (std::size_t k = 0; k < n; ++k) {
-        const Stem& s = awake_[k].stem;
-        const PlacedTree& own = trees_.tree(awake_[k].tree);
+    toWake_.clear();  // woken after the loop: waking grows awake_, which the loop reads
+    for (const AwakeStem& a : awake_) {
+        const Stem& s = a.stem;
+        const PlacedTree& own = trees_.tree(a.tree);
         for (std::size_t i = 1; i < s.nodeCount(); ++i) {
             const Vec3& p = s.position[i];
             if (horizontalDistance(p, own.foot) < 0.05) continue;  // still standing where it grew
@@ -164,13 +164,16 @@ void ForestMotion::wakeNeighbours() {
             trees_.near(p.x(), p.y(), reach + 0.75 * trees_.thickest(), nearTrees_);
             for (std::uint32_t j : nearTrees_) {
                 const PlacedTree& other = trees_.tree(j);
-                if (j == awake_[k].tree || awake(j)) continue;
+                if (j == a.tree || awake(j)) continue;
                 if (horizontalDistance(p, other.foot) > reach + baseRadius(other)) continue;
                 if (p.z() > other.foot.z() + other.geometry.height + reach) continue;
-                wake(j, now_);
+                toWake_.push_back(j);
             }
         }
     }
+    std::sort(toWake_.begin(), toWake_.end());
+    toWake_.erase(std::unique(toWake_.begin(), toWake_.end()), toWake_.end());
+    for (std::uint32_t j : toWake_) wake(j, now_);
 }
 
 Vec3 ForestMotion::connectionVelocity(const Stem& s, std::size_t c, double t, const Vec3& point) {

@@ -118,7 +118,7 @@ private:
     std::vector<StemSoilTouch> soilTouches_;
     std::vector<OpenImpact> impacts_;
     std::unordered_map<std::uint32_t, std::size_t> openImpactOf_;  // tree -> index in impacts_
-    std::vector<std::uint32_t> nearTrees_, nearSoil_;
+    std::vector<std::uint32_t> nearTrees_, nearSoil_, toWake_;
     std::vector<Eigen::AlignedBox3d> boxes_;  // per awake stem, this step (detectStemStem)
     DissipationLedger contactLedger_;
     ForestLedger slept_;        // ledgers of stems that went to sleep

@@ -94,7 +94,7 @@ void ForestMotion::wake(std::uint32_t tree, double t) {
     }
     const double step = stem.stableTimeStep();
     const bool broken = anyBroken(stem);
-    awake_.push_back(AwakeStem{tree, std::move(stem), {}, step, t, t, false, broken, {}});
+    awake_.push_back(AwakeStem{tree, std::move(stem), {}, step, t, broken, {}});
 }
 
 void ForestMotion::detect(const RigidBody& block, const std::vector<Vec3>& centres, double reachAhead, double t) {
@@ -128,7 +128,6 @@ void ForestMotion::detect(const RigidBody& block, const std::vector<Vec3>& centr
             a->lastBlockContact = t;
             if (!openImpactOf_.count(touch.tree)) openImpact(block, touch, t);
             impacts_[openImpactOf_.at(touch.tree)].inContact = true;
-            a->touched = true;
         }
     // The block's state when its contact with a stem ends is the impact's "after" (a later contact
     // with the same stem, before it sleeps, moves it on).

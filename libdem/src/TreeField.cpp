@@ -21,7 +21,6 @@ TreeField::TreeField(const stand::Forest& forest, const SoilBed& soil) {
         g.crownMass = t.crownMassKg;
         trees_.push_back({t.id, Vec3(t.x, t.y, soil.surfaceHeight(t.x, t.y)), g,
                           t.stool ? StemFoot::Clamped : StemFoot::RootSpring});  // Sect. 2.1.2
-        tallest_ = std::max(tallest_, g.height);
         thickest_ = std::max(thickest_, g.dbh);
         xmin = std::min(xmin, t.x), xmax = std::max(xmax, t.x);
         ymin = std::min(ymin, t.y), ymax = std::max(ymax, t.y);

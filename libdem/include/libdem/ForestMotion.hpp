@@ -56,9 +56,7 @@ private:
         Stem stem;
         StemLoads loads;
         double stableStep;
-        double wokenAt;
         double lastBlockContact;  // time of the last block contact (or of waking)
-        bool touched;             // by the block, since it woke
         bool broken;              // some connection broken (the step limit was recomputed)
         mutable std::vector<double> contactOmega2;  // per node, from the contacts' springs (stableStep)
     };

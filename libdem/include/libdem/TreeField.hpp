@@ -27,7 +27,6 @@ public:
 
     std::size_t size() const { return trees_.size(); }
     const PlacedTree& tree(std::size_t i) const { return trees_[i]; }
-    double tallest() const { return tallest_; }
     double thickest() const { return thickest_; }  // largest DBH, m
 
     // Appends the indices of the trees whose foot lies within `radius` (horizontally) of (x, y).
@@ -35,7 +34,7 @@ public:
 
 private:
     std::vector<PlacedTree> trees_;
-    double tallest_ = 0, thickest_ = 0;
+    double thickest_ = 0;
     // Uniform grid over the trees' bounding box: cell (i, j) lists its trees in cellStart_.
     double x0_ = 0, y0_ = 0, cell_ = 5;
     int nx_ = 0, ny_ = 0;

@@ -94,7 +94,8 @@ void ForestMotion::wake(std::uint32_t tree, double t) {
     }
     const double step = stem.stableTimeStep();
     const bool broken = anyBroken(stem);
-    awake_.push_back(AwakeStem{tree, std::move(stem), {}, step, t, broken, {}});
+    awake_.push_back(AwakeStem{tree, std::move(stem), {}, step, t, broken, {}, {}});
+    stemPairsStale_ = true;
 }
 
 void ForestMotion::detect(const RigidBody& block, const std::vector<Vec3>& centres, double reachAhead, double t) {
@@ -230,68 +231,96 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
                         blockTouches_.end());
 }
 
-void ForestMotion::detectStemStem() {
-    for (auto& touch : stemTouches_) touch.touching = false;
-    // Boxes around each awake stem's nodes, widened by its thickest radius: most pairs of standing
-    // stems are told apart by these alone.
+// Pairs of connections of different awake stems that may touch: within their radii plus the skin
+// of each other when listed. The list holds until some node has moved half the skin (then no pair
+// left out can have closed the skin) or the awake stems change.
+void ForestMotion::listStemPairs() {
+    stemPairs_.clear();
+    // Boxes around each awake stem's nodes, widened by its thickest radius and the skin: most pairs
+    // of standing stems are told apart by these alone.
     boxes_.resize(awake_.size());
     for (std::size_t k = 0; k < awake_.size(); ++k) {
-        const Stem& s = awake_[k].stem;
+        AwakeStem& a = awake_[k];
+        a.listedAt = a.stem.position;
         Eigen::AlignedBox3d box;
-        for (const Vec3& p : s.position) box.extend(p);
-        const double r = 0.5 * s.diameterAt(0);
+        for (const Vec3& p : a.stem.position) box.extend(p);
+        const double r = 0.5 * a.stem.diameterAt(0) + 0.5 * kStemPairSkin;
         boxes_[k] = Eigen::AlignedBox3d(box.min() - Vec3::Constant(r), box.max() + Vec3::Constant(r));
     }
     for (std::size_t ia = 0; ia < awake_.size(); ++ia)
         for (std::size_t ib = ia + 1; ib < awake_.size(); ++ib) {
             if (!boxes_[ia].intersects(boxes_[ib])) continue;
-            const AwakeStem& A = awake_[ia];
-            const AwakeStem& B = awake_[ib];
-            const PlacedTree& ta = trees_.tree(A.tree);
-            const PlacedTree& tb = trees_.tree(B.tree);
-            for (std::size_t ca = 0; ca < A.stem.connectionCount(); ++ca) {
-                if (A.stem.broken(ca)) continue;
-                const Vec3 &a0 = A.stem.position[ca], &a1 = A.stem.position[ca + 1];
-                const double ra = 0.5 * A.stem.connectionDiameter(ca);
-                for (std::size_t cb = 0; cb < B.stem.connectionCount(); ++cb) {
-                    if (B.stem.broken(cb)) continue;
-                    const Vec3 &b0 = B.stem.position[cb], &b1 = B.stem.position[cb + 1];
-                    const double rb = 0.5 * B.stem.connectionDiameter(cb);
+            const Stem& A = awake_[ia].stem;
+            const Stem& B = awake_[ib].stem;
+            for (std::size_t ca = 0; ca < A.connectionCount(); ++ca) {
+                if (A.broken(ca)) continue;
+                const Vec3 &a0 = A.position[ca], &a1 = A.position[ca + 1];
+                for (std::size_t cb = 0; cb < B.connectionCount(); ++cb) {
+                    if (B.broken(cb)) continue;
+                    const Vec3 &b0 = B.position[cb], &b1 = B.position[cb + 1];
+                    const double near = 0.5 * (A.connectionDiameter(ca) + B.connectionDiameter(cb)) + kStemPairSkin;
                     // Cheap rejection on the segments' midpoints before the exact closest points.
-                    const double reach = ra + rb + 0.5 * ((a1 - a0).norm() + (b1 - b0).norm());
+                    const double reach = near + 0.5 * ((a1 - a0).norm() + (b1 - b0).norm());
                     if ((0.5 * (a0 + a1) - 0.5 * (b0 + b1)).squaredNorm() > reach * reach) continue;
                     const auto [s, t] = closestBetweenSegments(a0, a1, b0, b1);
-                    const Vec3 pa = a0 + s * (a1 - a0), pb = b0 + t * (b1 - b0);
-                    const Vec3 d = pa - pb;
-                    const double dist = d.norm();
-                    const double overlap = ra + rb - dist;
-                    if (overlap <= 0 || dist == 0) continue;
-                    StemStemTouch* touch = nullptr;
-                    // Stem/stem contacts are frictionless (Table 2: phi_t-t = 0), so they carry no
-                    // history worth moving along the stems: one contact per pair of connections.
-                    for (auto& st : stemTouches_)
-                        if (st.treeA == A.tree && st.treeB == B.tree && st.connectionA == ca && st.connectionB == cb) touch = &st;
-                    if (!touch) {
-                        const bool fused = fusedAtRest(ta, ca, A.stem, tb, cb, B.stem);
-                        stemTouches_.push_back(StemStemTouch{A.tree, B.tree, ca, cb, s, t, startedAt(overlap), ContactGeometry{}, false, fused});
-                        touch = &stemTouches_.back();
-                    }
-                    ContactGeometry& g = touch->geometry;
-                    g.normal = d / dist;
-                    g.overlap = std::max(0.0, overlap - touch->history.overlapOffset);
-                    g.point = pb + g.normal * (rb - 0.5 * overlap);
-                    g.relativeVelocity = connectionVelocity(A.stem, ca, s, g.point) - connectionVelocity(B.stem, cb, t, g.point);
-                    g.meanSpinNormal = 0.5 * ((1 - s) * A.stem.angularVelocity[ca] + s * A.stem.angularVelocity[ca + 1] +
-                                              (1 - t) * B.stem.angularVelocity[cb] + t * B.stem.angularVelocity[cb + 1])
-                                                 .dot(g.normal);
-                    g.radiusA = ra;
-                    g.radiusB = rb;
-                    touch->s = s;
-                    touch->t = t;
-                    touch->touching = true;
+                    if ((a0 + s * (a1 - a0) - b0 - t * (b1 - b0)).squaredNorm() > near * near) continue;
+                    stemPairs_.push_back(ConnectionPair{ia, ib, ca, cb});
                 }
             }
         }
+    stemPairsStale_ = false;
+}
+
+bool ForestMotion::stemPairsStale() const {
+    if (stemPairsStale_) return true;
+    const double limit2 = 0.25 * kStemPairSkin * kStemPairSkin;
+    for (const AwakeStem& a : awake_)
+        for (std::size_t i = 0; i < a.stem.nodeCount(); ++i)
+            if ((a.stem.position[i] - a.listedAt[i]).squaredNorm() > limit2) return true;
+    return false;
+}
+
+void ForestMotion::detectStemStem() {
+    for (auto& touch : stemTouches_) touch.touching = false;
+    if (stemPairsStale()) listStemPairs();
+    for (const ConnectionPair& pair : stemPairs_) {
+        const AwakeStem& A = awake_[pair.a];
+        const AwakeStem& B = awake_[pair.b];
+        const std::size_t ca = pair.connectionA, cb = pair.connectionB;
+        if (A.stem.broken(ca) || B.stem.broken(cb)) continue;
+        const Vec3 &a0 = A.stem.position[ca], &a1 = A.stem.position[ca + 1];
+        const Vec3 &b0 = B.stem.position[cb], &b1 = B.stem.position[cb + 1];
+        const double ra = 0.5 * A.stem.connectionDiameter(ca), rb = 0.5 * B.stem.connectionDiameter(cb);
+        const auto [s, t] = closestBetweenSegments(a0, a1, b0, b1);
+        const Vec3 pa = a0 + s * (a1 - a0), pb = b0 + t * (b1 - b0);
+        const Vec3 d = pa - pb;
+        const double dist = d.norm();
+        const double overlap = ra + rb - dist;
+        if (overlap <= 0 || dist == 0) continue;
+        StemStemTouch* touch = nullptr;
+        // Stem/stem contacts are frictionless (Table 2: phi_t-t = 0), so they carry no history worth
+        // moving along the stems: one contact per pair of connections.
+        for (auto& st : stemTouches_)
+            if (st.treeA == A.tree && st.treeB == B.tree && st.connectionA == ca && st.connectionB == cb) touch = &st;
+        if (!touch) {
+            const bool fused = fusedAtRest(trees_.tree(A.tree), ca, A.stem, trees_.tree(B.tree), cb, B.stem);
+            stemTouches_.push_back(StemStemTouch{A.tree, B.tree, ca, cb, s, t, startedAt(overlap), ContactGeometry{}, false, fused});
+            touch = &stemTouches_.back();
+        }
+        ContactGeometry& g = touch->geometry;
+        g.normal = d / dist;
+        g.overlap = std::max(0.0, overlap - touch->history.overlapOffset);
+        g.point = pb + g.normal * (rb - 0.5 * overlap);
+        g.relativeVelocity = connectionVelocity(A.stem, ca, s, g.point) - connectionVelocity(B.stem, cb, t, g.point);
+        g.meanSpinNormal = 0.5 * ((1 - s) * A.stem.angularVelocity[ca] + s * A.stem.angularVelocity[ca + 1] +
+                                  (1 - t) * B.stem.angularVelocity[cb] + t * B.stem.angularVelocity[cb + 1])
+                                     .dot(g.normal);
+        g.radiusA = ra;
+        g.radiusB = rb;
+        touch->s = s;
+        touch->t = t;
+        touch->touching = true;
+    }
     stemTouches_.erase(std::remove_if(stemTouches_.begin(), stemTouches_.end(), [](const StemStemTouch& c) { return !c.touching; }),
                        stemTouches_.end());
 }
@@ -481,6 +510,7 @@ void ForestMotion::sleep(const RigidBody& block, double t) {
                            stemTouches_.end());
         asleep_.emplace(tree, std::move(s));
         awake_.erase(awake_.begin() + static_cast<std::ptrdiff_t>(k));
+        stemPairsStale_ = true;
     }
 }
 

@@ -9,12 +9,13 @@ namespace sylva::dem {
 void StableStep::add(double stiffness, double dampingCoefficient, double inverseMass) {
     if (stiffness <= 0 || inverseMass <= 0) return;
     omega2_ += stiffness * inverseMass;
-    zeta_ = std::max(zeta_, dampingCoefficient * std::sqrt(inverseMass) / (2 * std::sqrt(stiffness)));
+    gamma_ += dampingCoefficient * inverseMass;
 }
 
 double StableStep::critical() const {
     if (omega2_ <= 0) return std::numeric_limits<double>::infinity();
-    return 2.0 / std::sqrt(omega2_) * (std::sqrt(1 + zeta_ * zeta_) - zeta_);
+    const double omega = std::sqrt(omega2_), zeta = gamma_ / (2 * omega);
+    return 2.0 / omega * (std::sqrt(1 + zeta * zeta) - zeta);
 }
 
 }  // namespace sylva::dem

@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "libdem/RotationVector.hpp"
 #include "libdem/StableStep.hpp"
 #include "libstand/Allometry.hpp"
 #include "libstand/InputError.hpp"
@@ -15,46 +16,6 @@ namespace {
 
 const double kPi = std::acos(-1.0);
 constexpr double kBreastHeight = 1.3;  // m, where the DBH is measured
-
-// Rotation vector (axis times angle, rad) of q, taking the shorter way round.
-Vec3 rotationVector(Quat q) {
-    if (q.w() < 0) q.coeffs() *= -1;
-    const double s = q.vec().norm();
-    if (s < 1e-300) return 2 * q.vec();
-    return 2 * std::atan2(s, q.w()) / s * q.vec();
-}
-
-Eigen::Matrix3d skew(const Vec3& v) {
-    Eigen::Matrix3d m;
-    m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-    return m;
-}
-
-// Jacobians of the rotation vector. A small turn u applied on the left of the rotation exp(theta)
-// moves theta by inverseLeftJacobian(theta) u; a change d of theta turns exp(theta) on the right
-// by rightJacobian(theta) d. With them the springs' torques are the exact derivatives of their
-// energy, at any relative rotation (to first order in theta they are the identity).
-Eigen::Matrix3d inverseLeftJacobian(const Vec3& theta) {
-    const double a = theta.norm();
-    const Eigen::Matrix3d k = skew(theta);
-    const double c = a < 1e-4 ? 1.0 / 12 + a * a / 720 : 1 / (a * a) - (1 + std::cos(a)) / (2 * a * std::sin(a));
-    return Eigen::Matrix3d::Identity() - 0.5 * k + c * k * k;
-}
-
-Eigen::Matrix3d rightJacobian(const Vec3& theta) {
-    const double a = theta.norm();
-    const Eigen::Matrix3d k = skew(theta);
-    const double b = a < 1e-4 ? 0.5 - a * a / 24 : (1 - std::cos(a)) / (a * a);
-    const double c = a < 1e-4 ? 1.0 / 6 - a * a / 120 : (a - std::sin(a)) / (a * a * a);
-    return Eigen::Matrix3d::Identity() - b * k + c * k * k;
-}
-
-// Half of the rotation whose rotation vector is theta.
-Quat halfTurn(const Vec3& theta) {
-    const double angle = theta.norm();
-    if (angle == 0.0) return Quat::Identity();
-    return Quat(Eigen::AngleAxisd(0.5 * angle, theta / angle));
-}
 
 void validate(const StemGeometry& g, const StemParams& p) {
     const auto fail = [](const std::string& what) { throw InputError("stem geometry: " + what); };
@@ -145,7 +106,7 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         // Relative rotation of b with respect to a. Its components are the same in a's frame, b's
         // frame and the frame halfway between them, which is the connection's frame.
         const Vec3 theta = rotationVector(orientation[a].conjugate() * orientation[b]);
-        const Quat frame = orientation[a] * halfTurn(theta);
+        const Quat frame = orientation[a] * fromRotationVector(0.5 * theta);
         const Vec3 chord = position[b] - position[a];
         const Vec3 stretch = frame.conjugate() * chord - Vec3(0, 0, length_);  // shear x, y; axial z
 

@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "libdem/RotationVector.hpp"
 #include "libdem/SimulationError.hpp"
 
 namespace sylva::dem {
@@ -51,9 +52,7 @@ StemEnergy StemStepper::step(Stem& stem, double dt, const StemLoads& loads) {
             const Vec3 turn = dt * w;
             if (hasTorque) ledger.externalWork += loads.torque[i].dot(turn);
             ledger.relaxation += rate * inertia[i] * before.dot(turn);
-            const double angle = turn.norm();
-            if (angle > 0)
-                stem.orientation[i] = (Quat(Eigen::AngleAxisd(angle, turn / angle)) * stem.orientation[i]).normalized();
+            stem.orientation[i] = (fromRotationVector(turn) * stem.orientation[i]).normalized();
         }
     }
     const StemLedger& after = ledger;

@@ -101,24 +101,28 @@ TEST(BlockOnSlope, EnergyIsConservedWithoutDampingOrFriction) {
     EXPECT_GT(std::log2(fine / finer), 0.8);
 }
 
+// Compared after 1 s, while the block's first impacts decide its path: later, which soil sphere
+// a corner meets next flips with the step (at 3 s the errors at safety 0.15, 0.075 and 0.0375 are
+// 0.069, 0.084 and 0.092 m: no order can be read), a sensitivity of the path, not an error.
 TEST(BlockOnSlope, ResultsConvergeAsTheTimeStepShrinks) {
     auto endPoint = [](double safety) {
         const Scene scene(straightSlopeScene(33, 120, 20, {"integration.safety=" + std::to_string(safety),
                                                            "release.x_m=10", "release.y_m=10"}));
         BlockMotion m(scene, drawRelease(scene, 7));
-        while (m.time() < 3.0) m.step();
+        while (m.time() < 1.0) m.step();
         return m.block().position;
     };
-    const Vec3 ref = endPoint(0.3 / 16);
+    const Vec3 ref = endPoint(0.3 / 64);
     const double e1 = (endPoint(0.3) - ref).norm(), e2 = (endPoint(0.15) - ref).norm(), e3 = (endPoint(0.075) - ref).norm();
     const double order = std::log2(e2 / e3);
     RecordProperty("errors_m", std::to_string(e1) + " " + std::to_string(e2) + " " + std::to_string(e3));
     RecordProperty("order", std::to_string(order));
-    std::printf("position error after 3 s at safety 0.3/0.15/0.075: %.4g %.4g %.4g m; observed order %.2f\n", e1, e2, e3,
-                std::log2(e1 / e2));
+    std::printf("position error after 1 s at safety 0.3/0.15/0.075: %.4g %.4g %.4g m; observed orders %.2f %.2f\n", e1, e2,
+                e3, std::log2(e1 / e2), order);
     EXPECT_LT(e3, e2);
     EXPECT_LT(e2, e1);
     // The viscous term uses the half-step-old velocity (as Yade does): first order overall.
+    EXPECT_GT(std::log2(e1 / e2), 0.7);
     EXPECT_GT(order, 0.7);
 }
 

@@ -59,6 +59,11 @@ private:
         double lastBlockContact;  // time of the last block contact (or of waking)
         bool broken;              // some connection broken (the step limit was recomputed)
         mutable std::vector<double> contactOmega2;  // per node, from the contacts' springs (stableStep)
+        std::vector<Vec3> listedAt;  // node positions when stemPairs_ was made
+    };
+    // Connections of two awake stems (indices into awake_) close enough to be checked each step.
+    struct ConnectionPair {
+        std::size_t a, b, connectionA, connectionB;
     };
     // A block sphere against a stem (the deepest of its connections this step).
     struct BlockStemTouch {
@@ -95,6 +100,8 @@ private:
     AwakeStem* awake(std::uint32_t tree);
     void wakeNeighbours();
     void detectBlockStem(const RigidBody& block, const std::vector<Vec3>& centres);
+    void listStemPairs();
+    bool stemPairsStale() const;
     void detectStemStem();
     void detectStemSoil();
     void openImpact(const RigidBody& block, const BlockStemTouch& touch, double t);
@@ -117,7 +124,10 @@ private:
     std::vector<OpenImpact> impacts_;
     std::unordered_map<std::uint32_t, std::size_t> openImpactOf_;  // tree -> index in impacts_
     std::vector<std::uint32_t> nearTrees_, nearSoil_, toWake_;
-    std::vector<Eigen::AlignedBox3d> boxes_;  // per awake stem, this step (detectStemStem)
+    std::vector<Eigen::AlignedBox3d> boxes_;  // per awake stem (listStemPairs)
+    std::vector<ConnectionPair> stemPairs_;
+    bool stemPairsStale_ = true;
+    static constexpr double kStemPairSkin = 0.05;  // m
     DissipationLedger contactLedger_;
     ForestLedger slept_;        // ledgers of stems that went to sleep
     double frozenElastic_ = 0, frozenPotential_ = 0, injected_ = 0;

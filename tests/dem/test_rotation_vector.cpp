@@ -1,0 +1,48 @@
+// The rotation-vector maps switch to Taylor series at small angles: on both sides of each switch
+// they must agree with the closed forms (evaluated here in long double) to near machine precision,
+// and the maps must invert each other.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "libdem/RotationVector.hpp"
+
+using namespace sylva::dem;
+
+namespace {
+
+// Closed forms in long double: the reference the series are checked against.
+long double invLeftCoefficient(long double a) { return 1 / (a * a) - (1 + std::cos(a)) / (2 * a * std::sin(a)); }
+long double rightB(long double a) { return (1 - std::cos(a)) / (a * a); }
+long double rightC(long double a) { return (a - std::sin(a)) / (a * a * a); }
+
+}  // namespace
+
+TEST(RotationVector, RoundTripAcrossTheSeriesSwitch) {
+    const Vec3 axis = Vec3(0.3, -0.5, 0.81).normalized();
+    for (double angle : {1e-9, 1e-5, 0.01, 0.0999, 0.1001, 0.2, 1.0, 3.0}) {
+        const Vec3 theta = angle * axis;
+        const Quat q = fromRotationVector(theta);
+        EXPECT_NEAR(q.norm(), 1.0, 1e-15) << angle;
+        const Quat reference(Eigen::AngleAxisd(angle, axis));
+        EXPECT_LT((q.coeffs() - reference.coeffs()).norm(), 1e-15) << angle;
+        // 1e-15 of the angle: the series stop where their next term is below that.
+        EXPECT_LT((rotationVector(q) - theta).norm(), 2e-15 * std::max(1.0, angle)) << angle;
+    }
+}
+
+TEST(RotationVector, JacobiansMatchTheClosedFormsNearTheSwitch) {
+    const Vec3 axis = Vec3(-0.2, 0.7, 0.4).normalized();
+    for (long double a : {0.02L, 0.0999L, 0.1001L, 0.3L}) {
+        const Vec3 theta = static_cast<double>(a) * axis;
+        Eigen::Matrix3d k;
+        k << 0, -theta.z(), theta.y(), theta.z(), 0, -theta.x(), -theta.y(), theta.x(), 0;
+        const Eigen::Matrix3d invLeft = Eigen::Matrix3d::Identity() - 0.5 * k + double(invLeftCoefficient(a)) * k * k;
+        const Eigen::Matrix3d right = Eigen::Matrix3d::Identity() - double(rightB(a)) * k + double(rightC(a)) * k * k;
+        EXPECT_LT((inverseLeftJacobian(theta) - invLeft).norm(), 1e-14) << double(a);
+        EXPECT_LT((rightJacobian(theta) - right).norm(), 1e-14) << double(a);
+    }
+    // J_r(theta) = J_l(-theta): inverseLeftJacobian(-theta) undoes rightJacobian(theta).
+    const Vec3 theta = 0.05 * axis;
+    EXPECT_LT((inverseLeftJacobian(-theta) * rightJacobian(theta) - Eigen::Matrix3d::Identity()).norm(), 1e-14);
+}

@@ -79,6 +79,7 @@ void ForestMotion::wake(std::uint32_t tree, double t) {
     const PlacedTree& p = trees_.tree(tree);
     auto slept = asleep_.find(tree);
     Stem stem = slept != asleep_.end() ? std::move(slept->second) : Stem(p.geometry, cfg_.stem, p.foot, p.support);
+    if (slept == asleep_.end()) stem.carryOwnWeight(cfg_.gravity);
     if (slept != asleep_.end()) {
         // Its frozen energy and its ledger go back with it.
         frozenElastic_ -= stem.elasticEnergy();
@@ -90,11 +91,11 @@ void ForestMotion::wake(std::uint32_t tree, double t) {
         slept_.unloadingGain -= stem.ledger.unloadingGain;
         asleep_.erase(slept);
     } else {
-        injected_ += potentialEnergy(stem, cfg_.gravity);  // the stem enters the energy budget
+        injected_ += potentialEnergy(stem, cfg_.gravity) + stem.elasticEnergy();  // the stem enters the energy budget
     }
     const double step = stem.stableTimeStep();
     const bool broken = anyBroken(stem);
-    awake_.push_back(AwakeStem{tree, std::move(stem), {}, step, t, broken, {}, {}});
+    awake_.push_back(AwakeStem{tree, std::move(stem), {}, step, t, broken, false, {}, {}});
     stemPairsStale_ = true;
 }
 
@@ -118,7 +119,7 @@ void ForestMotion::detect(const RigidBody& block, const std::vector<Vec3>& centr
         }
     }
     wakeNeighbours();
-    detectBlockStem(block, centres);
+    detectBlockStem(block, centres, reachAhead);
     for (auto& [tree, index] : openImpactOf_) {
         impacts_[index].wasInContact = impacts_[index].inContact;
         impacts_[index].inContact = false;
@@ -140,6 +141,14 @@ void ForestMotion::detect(const RigidBody& block, const std::vector<Vec3>& centr
     }
     detectStemStem();
     detectStemSoil();
+    setMovingWhereTouched();
+}
+
+void ForestMotion::setMovingWhereTouched() {
+    for (const auto& t : blockTouches_) awake(t.tree)->moving = true;
+    for (const auto& t : stemTouches_)
+        if (!t.ignored) awake(t.treeA)->moving = awake(t.treeB)->moving = true;
+    for (const auto& t : soilTouches_) awake(t.tree)->moving = true;
 }
 
 // A point near connection c, at parameter t of its axis: it moves with the axis point
@@ -182,10 +191,13 @@ Vec3 ForestMotion::connectionVelocity(const Stem& s, std::size_t c, double t, co
     return (1 - t) * s.velocity[c] + t * s.velocity[c + 1] + spin.cross(point - q);
 }
 
-void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec3>& centres) {
+// A standing stem starts moving (and sets the step) once the block could reach it within the
+// next detections (`approach`), so that their contact begins at the stem's step: at the block's
+// own step it would begin centimetres deep.
+void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec3>& centres, double approach) {
     for (auto& touch : blockTouches_) touch.touching = false;
     const Vec3 omega = block.angularVelocity();
-    for (const auto& a : awake_) {
+    for (auto& a : awake_) {
         const Stem& s = a.stem;
         for (std::size_t c = 0; c < s.connectionCount(); ++c) {
             if (s.broken(c)) continue;
@@ -193,7 +205,7 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
             const Vec3& a1 = s.position[c + 1];
             const double r = 0.5 * s.connectionDiameter(c);
             const double tc = closestOnSegment(block.position, a0, a1);
-            if ((block.position - (a0 + tc * (a1 - a0))).norm() > block.boundingRadius() + r) continue;
+            if ((block.position - (a0 + tc * (a1 - a0))).norm() > block.boundingRadius() + r + approach) continue;
             for (std::uint32_t i = 0; i < centres.size(); ++i) {
                 const double rb = block.spheres()[i].radius;
                 const double t = closestOnSegment(centres[i], a0, a1);
@@ -201,6 +213,7 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
                 const Vec3 d = centres[i] - q;
                 const double dist = d.norm();
                 const double overlap = rb + r - dist;
+                if (overlap > -approach) a.moving = true;
                 if (overlap <= 0 || dist == 0) continue;
                 // One contact per (block sphere, stem): the deepest connection; its history moves
                 // with it from one connection to the next.
@@ -402,6 +415,7 @@ double ForestMotion::stableStep(const RigidBody& block, StableStep& blockStep) c
     }
     double limit = std::numeric_limits<double>::infinity();
     for (const auto& a : awake_) {
+        if (!a.moving) continue;
         const double own = 2 / a.stableStep;
         const double contacts = *std::max_element(a.contactOmega2.begin(), a.contactOmega2.end());
         limit = std::min(limit, 2 / std::sqrt(own * own + contacts));
@@ -458,6 +472,11 @@ void ForestMotion::integrate(double dt) {
     lastDt_ = dt;
     double stems = 0;
     for (auto& a : awake_) {
+        if (!a.moving) {
+            const StemEnergy e = stepper_.energyAtRest(a.stem);
+            stems += e.total() + e.netLoss + a.stem.ledger.externalWork;  // as below, loads' work excluded
+            continue;
+        }
         const double externalBefore = a.stem.ledger.externalWork;
         const StemEnergy e = stepper_.step(a.stem, dt, a.loads);
         // The stem's own budget without the work of the contact loads, which the contacts' springs

@@ -97,6 +97,17 @@ Stem::Stem(const StemGeometry& g, const StemParams& p, const Vec3& foot, StemFoo
     }
 }
 
+void Stem::carryOwnWeight(double gravity) {
+    double weightAbove = 0, stored = 0;
+    for (std::size_t c = connections_.size(); c-- > 0;) {
+        weightAbove += mass_[c + 1] * gravity;
+        Connection& k = connections_[c];
+        k.weightCompression = weightAbove / k.axial;
+        stored += 0.5 * weightAbove * k.weightCompression;
+    }
+    elasticEnergy_ = stored;
+}
+
 void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque, double dt) {
     double stored = 0;
     for (std::size_t c = 0; c < connections_.size(); ++c) {
@@ -108,7 +119,7 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         const Vec3 theta = rotationVector(orientation[a].conjugate() * orientation[b]);
         const Quat frame = orientation[a] * fromRotationVector(0.5 * theta);
         const Vec3 chord = position[b] - position[a];
-        const Vec3 stretch = frame.conjugate() * chord - Vec3(0, 0, length_);  // shear x, y; axial z
+        const Vec3 stretch = frame.conjugate() * chord - Vec3(0, 0, length_ + k.weightCompression);  // shear x, y; axial z
 
         const Vec2 bend = theta.head<2>();
         const HingeWork w = k.bending.rotate(bend - k.bendingAngle);

@@ -11,6 +11,26 @@ namespace sylva::dem {
 StemStepper::StemStepper(const Vec3& gravity, double relaxationRate)
     : gravity_(gravity), relaxationRate_(relaxationRate) {}
 
+namespace {
+
+// Energy that left the stem up to a step's start (StemEnergy::netLoss), the power terms by the
+// trapezoid rule over the step from `before` to `after`.
+double netLoss(const StemLedger& before, const StemLedger& after) {
+    return after.bendingPlasticity + after.rootPlasticity + after.rupture - after.unloadingGain +
+           0.5 * (before.bendingDamping + after.bendingDamping + before.relaxation + after.relaxation -
+                  before.externalWork - after.externalWork);
+}
+
+}  // namespace
+
+StemEnergy StemStepper::energyAtRest(const Stem& stem) const {
+    StemEnergy e;
+    e.elastic = stem.elasticEnergy();
+    for (std::size_t i = 0; i < stem.nodeCount(); ++i) e.potential -= stem.mass()[i] * gravity_.dot(stem.position[i]);
+    e.netLoss = netLoss(stem.ledger, stem.ledger);
+    return e;
+}
+
 StemEnergy StemStepper::step(Stem& stem, double dt, const StemLoads& loads) {
     const std::size_t n = stem.nodeCount();
     const bool hasForce = !loads.force.empty(), hasTorque = !loads.torque.empty();
@@ -55,10 +75,7 @@ StemEnergy StemStepper::step(Stem& stem, double dt, const StemLoads& loads) {
             stem.orientation[i] = (fromRotationVector(turn) * stem.orientation[i]).normalized();
         }
     }
-    const StemLedger& after = ledger;
-    e.netLoss = after.bendingPlasticity + after.rootPlasticity + after.rupture - after.unloadingGain +
-                0.5 * (before.bendingDamping + after.bendingDamping + before.relaxation + after.relaxation -
-                       before.externalWork - after.externalWork);
+    e.netLoss = netLoss(before, ledger);
     for (std::size_t i = 0; i < n; ++i)
         if (!stem.position[i].allFinite() || !stem.velocity[i].allFinite() || !stem.angularVelocity[i].allFinite())
             throw SimulationError("stem node " + std::to_string(i) + " became NaN (time step " + std::to_string(dt) +

@@ -1,8 +1,9 @@
 #pragma once
 // The forest's part of a block run. Stems are plain data (TreeField) until the block comes near:
 // then a stem is built into the simulation (woken), integrated while the block can touch it, and
-// put back to sleep once the block has left it (its deformed or broken shape is kept). The stiff
-// stem time step is only paid while some stem is awake.
+// put back to sleep once the block has left it (its deformed or broken shape is kept). A woken
+// stem stands in static equilibrium (Stem::carryOwnWeight) and is only stepped once something
+// touches it: the stiff stem time step is paid only while stems move.
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <unordered_map>
@@ -58,6 +59,8 @@ private:
         double stableStep;
         double lastBlockContact;  // time of the last block contact (or of waking)
         bool broken;              // some connection broken (the step limit was recomputed)
+        bool moving;              // touched since woken; until then it stands still, is not stepped
+                                  // and does not limit the time step
         mutable std::vector<double> contactOmega2;  // per node, from the contacts' springs (stableStep)
         std::vector<Vec3> listedAt;  // node positions when stemPairs_ was made
     };
@@ -99,11 +102,12 @@ private:
     void wake(std::uint32_t tree, double t);
     AwakeStem* awake(std::uint32_t tree);
     void wakeNeighbours();
-    void detectBlockStem(const RigidBody& block, const std::vector<Vec3>& centres);
+    void detectBlockStem(const RigidBody& block, const std::vector<Vec3>& centres, double approach);
     void listStemPairs();
     bool stemPairsStale() const;
     void detectStemStem();
     void detectStemSoil();
+    void setMovingWhereTouched();
     void openImpact(const RigidBody& block, const BlockStemTouch& touch, double t);
     void closeImpact(std::size_t index, const RigidBody& block);
     static Vec3 connectionVelocity(const Stem& s, std::size_t c, double t, const Vec3& point);

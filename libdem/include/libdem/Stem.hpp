@@ -62,6 +62,11 @@ public:
     bool broken(std::size_t c) const { return connections_[c].bending.broken(); }
     const RootSpring& root() const { return root_; }
 
+    // Lengthens the axial springs' rest lengths so that the straight stem, as built, carries its own
+    // weight (gravity g, m/s^2, along -z) in static equilibrium: a tree standing still before the
+    // block comes. Their stored energy counts from now in elasticEnergy().
+    void carryOwnWeight(double gravity);
+
     // Brings every connection and the root spring to the current node configuration and adds their
     // forces and torques to `force` and `torque` (sized nodeCount()). The laws are incremental: call
     // once per step, dt being the step about to be taken (it weighs the viscous work).
@@ -78,6 +83,7 @@ private:
         double diameter;  // D_con
         double axial, shear, twist;  // N/m, N/m, N m/rad
         BendingLaw bending;
+        double weightCompression = 0;  // m: how much the weight above shortens the axial spring (carryOwnWeight)
         Vec2 bendingAngle = Vec2::Zero();  // relative rotation about x, y at the last update
     };
     StemGeometry geometry_;

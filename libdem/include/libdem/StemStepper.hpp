@@ -36,6 +36,9 @@ public:
     // One step of dt (at most stem.stableTimeStep()). Returns the energy at the step's start, with the
     // velocities brought to that instant. Throws SimulationError if the state becomes NaN.
     StemEnergy step(Stem& stem, double dt, const StemLoads& loads = {});
+    // The same account for a stem at rest that is not stepped (no velocity, no load): its state as
+    // left by the last step or by carryOwnWeight.
+    StemEnergy energyAtRest(const Stem& stem) const;
 
 private:
     Vec3 gravity_;

@@ -95,7 +95,8 @@ void ForestMotion::wake(std::uint32_t tree, double t) {
     }
     const double step = stem.stableTimeStep();
     const bool broken = anyBroken(stem);
-    awake_.push_back(AwakeStem{tree, std::move(stem), {}, step, t, broken, false, {}, {}});
+    // The all-awake reference steps every stem, standing or not.
+    awake_.push_back(AwakeStem{tree, std::move(stem), {}, step, t, broken, cfg_.activity.allAwake, {}, {}});
     stemPairsStale_ = true;
 }
 

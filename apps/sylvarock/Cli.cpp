@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -70,5 +71,10 @@ std::vector<double> numberList(const std::string& option, const std::string& tex
 }
 
 bool stderrIsTerminal() { return isatty(STDERR_FILENO) != 0; }
+
+void applyForestOption(const po::variables_map& vm, std::vector<std::string>& sets) {
+    if (vm.count("forest"))
+        sets.insert(sets.begin(), "forest.file=" + std::filesystem::absolute(vm["forest"].as<std::string>()).string());
+}
 
 }  // namespace sylva::cli

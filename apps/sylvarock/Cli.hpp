@@ -36,4 +36,10 @@ std::vector<double> numberList(const std::string& option, const std::string& tex
 // True when standard error is a terminal (progress bars are drawn only then).
 bool stderrIsTerminal();
 
+// `--forest F.csv` as simulate and scene export take it: the scene key forest.file, made absolute
+// (paths in a scene are relative to the scene file) and placed first so that it wins.
+inline constexpr const char* kForestHelp =
+    "forest CSV (sylvarock generate's, or any x,y,dbh_cm[,stool] tree file) in the terrain's frame";
+void applyForestOption(const po::variables_map& vm, std::vector<std::string>& sets);
+
 }  // namespace sylva::cli

@@ -49,7 +49,7 @@ int runSimulate(int argc, const char* const* argv) {
         ("seed", po::value<unsigned long>()->default_value(1), "campaign seed; run i uses a seed derived from (seed, i)")
         ("threads", po::value<int>()->default_value(0), "worker threads (0: all cores); results do not depend on it")
         ("out", po::value<std::string>(), "output directory (runs.csv, summary.json, impacts.csv, figures)")
-        ("forest", po::value<std::string>(), "forest CSV (sylvarock generate's, or any x,y,dbh_cm[,stool] tree file) in the terrain's frame")
+        ("forest", po::value<std::string>(), kForestHelp)
         ("trajectory", po::bool_switch(), "also write sampled trajectories (CSV and VTK) to OUT/trajectories/")
         ("block", po::value<std::string>(), "block shape override: cube | cuboid | sphere")
         ("set", po::value(&sets)->composing(), "override a scene key: --set section.key=value (repeatable)")
@@ -68,8 +68,7 @@ int runSimulate(int argc, const char* const* argv) {
     if (!vm.count("scene")) throw InputError("--scene is required (e.g. data/scenes/no-forest.ini)");
     if (!vm.count("out")) throw InputError("--out DIR is required");
     if (vm.count("block")) sets.insert(sets.begin(), "block.shape=" + vm["block"].as<std::string>());
-    if (vm.count("forest"))
-        sets.insert(sets.begin(), "forest.file=" + std::filesystem::absolute(vm["forest"].as<std::string>()).string());
+    applyForestOption(vm, sets);
     const int runs = vm.count("runs") ? vm["runs"].as<int>() : -1;
     if (vm.count("runs") && runs < 1) throw InputError("--runs must be at least 1");
 

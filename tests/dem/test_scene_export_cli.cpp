@@ -1,0 +1,149 @@
+// `sylvarock scene export`: stems.csv holds every stem of the forest at rest, node by node, with the
+// cone's radii and the feet on the terrain; a forest file that cannot be read is refused.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+struct CliRun {
+    int status;
+    std::string output;  // stdout and stderr
+};
+
+CliRun sceneExport(const std::string& arguments) {
+    const std::string command = std::string(SYLVAROCK_CLI) + " scene export " + arguments + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    CliRun run{-1, {}};
+    char buffer[4096];
+    while (std::fgets(buffer, sizeof buffer, pipe)) run.output += buffer;
+    const int raw = pclose(pipe);
+    run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    return run;
+}
+
+struct Node {
+    int node, linkedTo;
+    double x, y, z, radius;
+};
+
+// stems.csv by tree id, nodes in file order.
+std::map<long, std::vector<Node>> readStems(const std::string& path) {
+    std::ifstream in(path);
+    std::string line;
+    std::getline(in, line);
+    EXPECT_EQ(line.substr(0, 32), "tree,node,x,y,z,radius,linked_to");
+    std::map<long, std::vector<Node>> stems;
+    while (std::getline(in, line)) {
+        std::istringstream row(line);
+        long tree;
+        Node n;
+        char comma;
+        row >> tree >> comma >> n.node >> comma >> n.x >> comma >> n.y >> comma >> n.z >> comma >> n.radius >> comma >>
+            n.linkedTo;
+        EXPECT_FALSE(row.fail()) << line;
+        stems[tree].push_back(n);
+    }
+    return stems;
+}
+
+std::filesystem::path exportDir() {
+    const auto dir = std::filesystem::temp_directory_path() / "sylvarock-tests" / "scene-export";
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+// A straight slope 100 m long, 40 m wide, whose surface is z = 0.6 (100 - x). The release must lie on
+// it too (export writes run 0's).
+double surfaceZ(double x) { return 0.6 * (100 - x); }
+
+std::string slopeScene() {
+    const std::string profile = (exportDir() / "slope.csv").string();
+    std::ofstream(profile) << "x,z\n0,60\n100,0\n";
+    const std::string path = (exportDir() / "slope.ini").string();
+    std::ofstream(path) << "[terrain]\nprofile = " << profile << "\nwidth_m = 40\n"
+                        << "[release]\nx_m = 5\ny_min_m = 15\ny_max_m = 25\n";
+    return path;
+}
+
+struct ListedTree {
+    long id;
+    double x, y, dbhCm, heightM;
+};
+const std::vector<ListedTree> kForest = {{3, 20, 10, 18, 12.0}, {7, 45.5, 22, 30, 17.3}, {9, 70, 31, 41, 20.25}};
+
+std::string forestFile() {
+    const std::string path = (exportDir() / "forest.csv").string();
+    std::ofstream out(path);
+    out << "stem,x,y,dbh_cm,height_m\n";
+    for (const auto& t : kForest) out << t.id << ',' << t.x << ',' << t.y << ',' << t.dbhCm << ',' << t.heightM << '\n';
+    return path;
+}
+
+}  // namespace
+
+TEST(SceneExportCli, WritesEveryStemAtRestNodeByNode) {
+    const double spacing = 0.8, tip = 0.01;  // stem.node_spacing_m, stem.tip_diameter_m (default)
+    const std::string out = (exportDir() / "forest-out").string();
+    std::filesystem::remove_all(out);
+    const CliRun r = sceneExport("--scene " + slopeScene() + " --forest " + forestFile() +
+                                 " --set stem.node_spacing_m=0.8 --out " + out);
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("3 stems"), std::string::npos) << r.output;
+    const auto stems = readStems(out + "/stems.csv");
+    ASSERT_EQ(stems.size(), kForest.size());
+    for (const auto& t : kForest) {
+        ASSERT_EQ(stems.count(t.id), 1u) << t.id;
+        const auto& nodes = stems.at(t.id);
+        // ceil(H / spacing) equal connections: 15, 22 and 26 for 12, 17.3 and 20.25 m.
+        const std::size_t connections = static_cast<std::size_t>(std::ceil(t.heightM / spacing));
+        ASSERT_EQ(nodes.size(), connections + 1) << t.id;
+        // 9 significant digits in the file: 1e-6 m on coordinates below 100 m.
+        const double tol = 1e-6;
+        EXPECT_NEAR(nodes[0].z, surfaceZ(t.x), tol) << "foot on the surface, tree " << t.id;
+        // The cone through the DBH at 1.3 m and the tip diameter at H_T.
+        const double dbh = t.dbhCm / 100;
+        EXPECT_NEAR(nodes[0].radius, 0.5 * (tip + (dbh - tip) * t.heightM / (t.heightM - 1.3)), tol) << t.id;
+        EXPECT_NEAR(nodes.back().radius, 0.5 * tip, tol) << t.id;
+        for (std::size_t k = 0; k < nodes.size(); ++k) {
+            EXPECT_EQ(nodes[k].node, static_cast<int>(k));
+            EXPECT_EQ(nodes[k].linkedTo, static_cast<int>(k) - 1);
+            EXPECT_NEAR(nodes[k].x, t.x, tol);
+            EXPECT_NEAR(nodes[k].y, t.y, tol);
+            EXPECT_NEAR(nodes[k].z, nodes[0].z + t.heightM * k / connections, tol);  // standing straight
+            if (k > 0) {
+                EXPECT_LT(nodes[k].radius, nodes[k - 1].radius) << "tree " << t.id << " node " << k;
+            }
+        }
+    }
+}
+
+TEST(SceneExportCli, SingleTreeSceneExportsItsTree) {
+    const std::string out = (exportDir() / "single-out").string();
+    std::filesystem::remove_all(out);
+    const CliRun r = sceneExport("--scene " + std::string(SYLVAROCK_DATA) + "/scenes/single-tree.ini --out " + out);
+    ASSERT_EQ(r.status, 0) << r.output;
+    const auto stems = readStems(out + "/stems.csv");
+    ASSERT_EQ(stems.size(), 1u);
+    const auto& nodes = stems.begin()->second;
+    ASSERT_GT(nodes.size(), 2u);
+    EXPECT_DOUBLE_EQ(nodes[0].x, 20);  // tree.x_m, tree.y_m of the scene, on its flat ground
+    EXPECT_DOUBLE_EQ(nodes[0].y, 10);
+    EXPECT_DOUBLE_EQ(nodes[0].z, 0);
+}
+
+TEST(SceneExportCli, UnreadableForestIsRefusedWithItsName) {
+    const std::string missing = (exportDir() / "no-such-forest.csv").string();
+    const CliRun r = sceneExport("--scene " + slopeScene() + " --forest " + missing + " --out " + (exportDir() / "bad-out").string());
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("error"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(missing), std::string::npos) << r.output;
+}

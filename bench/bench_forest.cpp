@@ -1,0 +1,79 @@
+// Speed of forested runs (issue 4's target: 100 runs through a 500 m x 200 m forest at ~2 000
+// stems/ha in under 2 minutes on 2 cores, under 1 GB). Generates the MO1 aggregated forest of the
+// outside check (extent 130,0,630,200, seed 3), then runs the same campaign with and without it on
+// the paper's scene: the ratio of the two is what the forest costs.
+//   bench_forest [runs] [threads] [seed]
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "libdem/Campaign.hpp"
+#include "libdem/CampaignSummary.hpp"
+#include "libstand/ForestGenerator.hpp"
+#include "libstand/Inventory.hpp"
+
+using namespace sylva;
+
+namespace {
+
+struct Timing {
+    double wall = 0;
+    std::vector<double> cpu, runout;
+    long impacts = 0;
+};
+
+Timing timeCampaign(const dem::Scene& scene, int runs, int threads, unsigned long seed) {
+    dem::CampaignOptions o;
+    o.runs = runs;
+    o.threads = threads;
+    o.seed = seed;
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto results = dem::runCampaign(scene, o);
+    Timing t;
+    t.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    for (const auto& r : results) {
+        t.cpu.push_back(r.cpuSeconds);
+        t.runout.push_back(r.runoutAlongSlope);
+        t.impacts += static_cast<long>(r.impacts.size());
+    }
+    return t;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const int runs = argc > 1 ? std::atoi(argv[1]) : 100;
+    const int threads = argc > 2 ? std::atoi(argv[2]) : 2;
+    const unsigned long seed = argc > 3 ? std::strtoul(argv[3], nullptr, 10) : 9;
+    const std::string data = SYLVAROCK_DATA_DIR;
+
+    const std::string stems = data + "/stands/MO1_stems.csv";
+    const stand::StandCatalogue stand(stand::readInventory(stems, data + "/stands/MO1_plots.csv"), stems);
+    stand::GenerationSettings g;
+    g.seed = 3;
+    auto forest = stand::generateForest(stand, stand::Window::rectangle(130, 0, 630, 200), g).forest;
+    const std::size_t stemCount = forest.trees.size();
+
+    const dem::SceneConfig config = dem::loadScene(data + "/scenes/no-forest.ini");
+    const dem::Scene bare(config);
+    const dem::Scene forested(config, std::move(forest));
+
+    const Timing without = timeCampaign(bare, runs, threads, seed);
+    const Timing with = timeCampaign(forested, runs, threads, seed);
+    rusage ru{};
+    getrusage(RUSAGE_SELF, &ru);
+
+    std::printf("MO1 aggregated, %zu stems over 10 ha; %d runs on %d threads, seed %lu\n", stemCount, runs, threads, seed);
+    std::printf("%-10s %10s %14s %14s %10s %9s\n", "", "wall s", "CPU/run med s", "CPU/run p90 s", "Dist50 m", "impacts");
+    for (const auto& [name, t] : {std::pair<const char*, const Timing&>{"no forest", without}, {"forest", with}})
+        std::printf("%-10s %10.1f %14.3f %14.3f %10.1f %9ld\n", name, t.wall, dem::quantile(t.cpu, 0.5),
+                    dem::quantile(t.cpu, 0.9), dem::quantile(t.runout, 0.5), t.impacts);
+    std::printf("forest / no forest: wall x%.0f; PF50 on these runs %.3f\n", with.wall / without.wall,
+                1 - dem::quantile(with.runout, 0.5) / dem::quantile(without.runout, 0.5));
+    std::printf("peak resident memory: %.0f MB\n", ru.ru_maxrss / 1024.0);
+    return 0;
+}

@@ -18,7 +18,42 @@ std::string where(const Vec3& p) {
     os << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
     return os.str();
 }
+
+// Diameter of a standing stem at `height` above its foot: the cone through the DBH at 1.3 m and
+// the tip diameter at H_T (Stem::diameterAt), clamped to the stem.
+double standingDiameter(const StemGeometry& g, double tip, double height) {
+    const double z = std::clamp(height, 0.0, g.height);
+    return tip + (g.dbh - tip) * (g.height - z) / (g.height - 1.3);
+}
 }  // namespace
+
+// A block that starts inside a stem begins with a contact spring that no motion loaded: the
+// stem's response to it is energy from nowhere (it stopped such runs at the first step, as
+// "energy grew"). Like a start inside the soil, it is a bad release, refused up front.
+void BlockMotion::refuseStartInsideStem(const Scene& scene) const {
+    const TreeField& trees = scene.trees();
+    if (trees.size() == 0) return;
+    std::vector<std::uint32_t> near;
+    // A stem is widest at its foot, whose radius stays under 1.5 DBH for every stem taller than 2 m.
+    trees.near(block_.position.x(), block_.position.y(), block_.boundingRadius() + 1.5 * trees.thickest(), near);
+    for (std::uint32_t i : near) {
+        const PlacedTree& tree = trees.tree(i);
+        for (std::size_t k = 0; k < worldCentres_.size(); ++k) {
+            const double r = block_.spheres()[k].radius;
+            const Vec3& c = worldCentres_[k];
+            const double height = c.z() - tree.foot.z();
+            if (height - r > tree.geometry.height) continue;  // above the stem's top
+            const double stemRadius = 0.5 * standingDiameter(tree.geometry, cfg_.stem.tipDiameter, height);
+            if ((c - tree.foot).head<2>().norm() >= r + stemRadius) continue;
+            std::ostringstream os;
+            os.precision(4);
+            os << "the block is released inside stem " << tree.id << " (standing at " << where(tree.foot) << ", DBH "
+               << 100 * tree.geometry.dbh << " cm) at " << where(block_.position)
+               << ": move the release (release.x_m, release.y_*) or the stem, or lengthen block.launch_distance_m";
+            throw InputError(cfg_.sourceFile, 0, os.str());
+        }
+    }
+}
 
 BlockMotion::BlockMotion(const Scene& scene, const Release& start)
     : cfg_(scene.config()), soil_(scene.soil()), block_(scene.blockTemplate()),
@@ -29,18 +64,29 @@ BlockMotion::BlockMotion(const Scene& scene, const Release& start)
     worldCentres_.resize(block_.spheres().size());
     updateCentres();
     detectContacts();
-    if (!touches_.empty())
-        throw InputError(cfg_.sourceFile, 0, "the block is released inside the soil at " + where(start.position) +
-                                                 ": raise release.fall_height_m");
+    // Below the surface the block may lie under the soil spheres and touch none of them: it would
+    // start with no contact and fall for ever.
+    const double height = start.position.z() - soil_.surfaceHeight(start.position.x(), start.position.y());
+    if (!touches_.empty() || height <= 0) {
+        std::ostringstream os;
+        os.precision(4);
+        os << "the block is released inside the soil at " << where(start.position);
+        if (height <= 0) os << " (its centre " << -height << " m below the surface)";
+        throw InputError(cfg_.sourceFile, 0, os.str() + ": raise release.fall_height_m");
+    }
+    refuseStartInsideStem(scene);
     anticipatedStiffness_ = cfg_.integration.anticipatedContacts * law_.normalStiffness(ContactGeometry{});
     budget_.initialTotal = block_.kineticEnergy() + block_.mass() * cfg_.gravity * block_.position.z();
+    lastBlockSide_ = budget_.initialTotal;
 }
 
 double BlockMotion::step() {
     // detect contacts
     updateCentres();
     detectContacts();
-    forest_.detect(block_, worldCentres_, 2 * block_.velocity.norm() * lastDt_, t_);
+    // how far a block sphere can travel over the next two steps
+    const double reach = 2 * (block_.velocity.norm() + block_.angularVelocity().norm() * block_.boundingRadius()) * lastDt_;
+    forest_.detect(block_, worldCentres_, reach, t_);
     // time step
     const double dt = timeStep();
     // forces
@@ -56,7 +102,7 @@ double BlockMotion::step() {
     // integrate (the stems report their energy at the step's start), audit, and let stems the
     // block has left fall asleep
     forest_.integrate(dt);
-    audit(force, torque, dt, stored + forest_.budgetTerm());
+    audit(force, torque, dt, stored, forest_.budgetTerm());
     block_.advance(dt, force, torque);
     t_ += dt;
     ++steps_;
@@ -140,27 +186,41 @@ double BlockMotion::timeStep() {
 // Audited at t, where positions and contact springs are: the leapfrog's velocities are half a step
 // off, so they are first synchronised with half of this step's forces. Energy appearing from
 // nowhere means the integration went wrong.
-void BlockMotion::audit(const Vec3& force, const Vec3& torque, double dt, double stored) {
+void BlockMotion::audit(const Vec3& force, const Vec3& torque, double dt, double soilStored, double forestTerm) {
     const double m = block_.mass();
     const Vec3 v = block_.velocity + 0.5 * dt * force / m;
     const Vec3 w = (block_.orientation.conjugate() * (block_.angularMomentum + 0.5 * dt * torque))
                        .cwiseQuotient(block_.principalInertia());
     budget_.kinetic = 0.5 * m * v.squaredNorm() + 0.5 * w.dot(block_.principalInertia().cwiseProduct(w));
     budget_.potential = m * cfg_.gravity * block_.position.z();
-    budget_.stored = stored;
+    budget_.stored = soilStored + forestTerm;
     budget_.contactDamping = ledger_.contactDamping;
     budget_.friction = ledger_.friction;
-    const double total = budget_.kinetic + budget_.potential + stored + ledger_.contactDamping + ledger_.friction;
+    const double blockSide = budget_.kinetic + budget_.potential + soilStored + ledger_.contactDamping + ledger_.friction;
+    const double total = blockSide + forestTerm;
     // Energy converted so far: what left the potential, and at least the release's kinetic energy
     // plus the fall to the ground.
     const double scale = std::max(budget_.initialTotal - budget_.potential,
                                   budget_.initialTotal - m * cfg_.gravity * (block_.position.z() - cfg_.release.fallHeight));
     const double rel = (total - budget_.initialTotal) / scale;
     budget_.imbalance = std::max(budget_.imbalance, std::abs(rel));
-    if (rel > cfg_.integration.energyTolerance)
-        throw SimulationError("energy grew without a source at t = " + std::to_string(t_) + " s (+" +
-                              std::to_string(100 * rel) + " % of the energy converted): the time step is too large "
-                              "for these contact parameters; lower integration.safety or integration.dt_s");
+    budget_.flagged = budget_.imbalance > cfg_.integration.energyWarning;
+    const double blockRise = blockSide - lastBlockSide_, forestRise = forestTerm - lastForestTerm_;
+    lastBlockSide_ = blockSide;
+    lastForestTerm_ = forestTerm;
+    if (!(rel > cfg_.integration.energyTolerance)) return;
+    // Say where the last step's energy appeared: the remedies differ.
+    std::ostringstream os;
+    os.precision(3);
+    os << "energy grew without a source at t = " << t_ << " s (+" << 100 * rel << " % of the energy converted; "
+       << "in the last step the block, soil and their contacts gained " << blockRise << " J, the stems and their "
+       << "contacts " << forestRise << " J): ";
+    if (forestRise > blockRise)
+        os << "a stem's step is too large, or a connection between two of its nodes turned too far; lower "
+              "integration.stem_safety or refine stem.node_spacing_m";
+    else
+        os << "the time step is too large for these contact parameters; lower integration.safety or integration.dt_s";
+    throw SimulationError(os.str());
 }
 
 double BlockMotion::clearance() const {

@@ -76,12 +76,18 @@ Release drawRelease(const Scene& scene, std::uint64_t seed) {
         q = Eigen::AngleAxisd(az, Vec3::UnitZ()) * Eigen::AngleAxisd(ay, Vec3::UnitY()) * Eigen::AngleAxisd(ax, Vec3::UnitX());
     }
     const SoilBed& soil = scene.soil();
+    auto refuseOutside = [&](double x, double y, const std::string& what, const std::string& remedy) {
+        if (x < soil.xmin() || x > soil.xmax() || y < soil.ymin() || y > soil.ymax())
+            throw InputError(cfg.sourceFile, 0, what + " (" + std::to_string(x) + ", " + std::to_string(y) +
+                                                    ") is outside the terrain" + remedy);
+    };
     if (cfg.launch.enabled) {
         // At the tree, from upslope: the block's centre at the impact height, offset across its path.
         const auto& l = cfg.launch;
         const PlacedTree& t = scene.trees().tree(0);
         const double reach = scene.blockTemplate().boundingRadius() + 0.5 * t.geometry.dbh;
         const Vec3 p(t.foot.x() - l.distance, t.foot.y() + l.eccentricity * reach, t.foot.z() + l.impactHeight);
+        refuseOutside(p.x(), p.y(), "the launch start", ": move the tree (tree.x_m, tree.y_m) or shorten block.launch_distance_m");
         if (p.z() - scene.blockTemplate().boundingRadius() < soil.surfaceHeight(p.x(), p.y()) + 0.01)
             throw InputError(cfg.sourceFile, 0, "block.impact_height_m = " + std::to_string(l.impactHeight) +
                                                     " m puts the block into the ground (its bounding radius is " +
@@ -89,9 +95,7 @@ Release drawRelease(const Scene& scene, std::uint64_t seed) {
         return {p, q, Vec3(l.speed, 0, 0)};
     }
     const double y = rel.yMax > rel.yMin ? rng.uniform(rel.yMin, rel.yMax) : rel.yMin;
-    if (rel.x < soil.xmin() || rel.x > soil.xmax() || y < soil.ymin() || y > soil.ymax())
-        throw InputError(cfg.sourceFile, 0, "release point (" + std::to_string(rel.x) + ", " + std::to_string(y) +
-                                                ") is outside the terrain");
+    refuseOutside(rel.x, y, "release point", "");
     return {Vec3(rel.x, y, soil.surfaceHeight(rel.x, y) + rel.fallHeight), q};
 }
 

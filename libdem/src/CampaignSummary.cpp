@@ -36,6 +36,7 @@ CampaignSummary summarise(const std::vector<RunResult>& runs) {
         cpu.push_back(r.cpuSeconds);
         low += r.maxBounce <= 1.0;
         s.worstEnergyImbalance = std::max(s.worstEnergyImbalance, r.energy.imbalance);
+        s.energyFlaggedRuns += r.energy.flagged;
         ++s.stopReasons[toString(r.reason)];
     }
     s.dist50 = quantile(runout, 0.5);
@@ -65,15 +66,15 @@ std::ofstream openOut(const std::string& path) {
 void writeRunsCsv(const std::string& path, const std::vector<RunResult>& runs) {
     auto out = openOut(path);
     out << "run,seed,release_x,release_y,release_z,stop_x,stop_y,stop_z,runout_m,runout_horizontal_m,energy_line_deg,"
-           "stop_reason,max_speed_m_s,mean_speed_m_s,max_bounce_m,duration_s,cpu_s,steps,mean_dt_s,energy_imbalance,tree_impacts\n";
+           "stop_reason,max_speed_m_s,mean_speed_m_s,max_bounce_m,duration_s,cpu_s,steps,mean_dt_s,energy_imbalance,tree_impacts,energy_flag\n";
     char buf[512];
     for (const auto& r : runs) {
         std::snprintf(buf, sizeof buf,
-                      "%d,%llu,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%s,%.4f,%.4f,%.4f,%.4f,%.6f,%ld,%.3e,%.3e,%zu\n",
+                      "%d,%llu,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%s,%.4f,%.4f,%.4f,%.4f,%.6f,%ld,%.3e,%.3e,%zu,%d\n",
                       r.run, static_cast<unsigned long long>(r.seed), r.release.x(), r.release.y(), r.release.z(),
                       r.stop.x(), r.stop.y(), r.stop.z(), r.runoutAlongSlope, r.runoutHorizontal, r.energyLineDeg,
                       toString(r.reason).c_str(), r.maxSpeed, r.meanSpeed, r.maxBounce, r.duration, r.cpuSeconds,
-                      r.steps, r.meanDt, r.energy.imbalance, r.impacts.size());
+                      r.steps, r.meanDt, r.energy.imbalance, r.impacts.size(), r.energy.flagged ? 1 : 0);
         out << buf;
     }
 }
@@ -114,7 +115,7 @@ void writeImpactEnergyJson(const std::string& path, const RunResult& r) {
     j.field("soil_friction", r.energy.friction).field("left_vibrating_in_stems", f.frozen);
     j.endObject();
     j.field("created_by_unloading_law_j", f.unloadingGain);
-    j.field("energy_imbalance", r.energy.imbalance);
+    j.field("energy_imbalance", r.energy.imbalance).field("energy_flag", r.energy.flagged);
     j.endObject();
     out << "\n";
 }
@@ -134,6 +135,7 @@ void writeSummaryJson(const std::string& path, const CampaignSummary& s, double 
     j.field("mean_speed50_m_s", s.meanSpeed50).field("max_speed50_m_s", s.maxSpeed50);
     j.field("max_bounce50_m", s.maxBounce50).field("share_max_bounce_le_1m", s.shareBounceBelow1m);
     j.field("cpu_per_run50_s", s.cpu50).field("worst_energy_imbalance", s.worstEnergyImbalance);
+    j.field("energy_flagged_runs", s.energyFlaggedRuns);
     j.key("stop_reasons").beginObject();
     for (const auto& [k, v] : s.stopReasons) j.field(k, v);
     j.endObject();

@@ -74,7 +74,8 @@ po::options_description sceneKeys(SceneConfig& c, std::string& shape, std::strin
         ("integration.stem_safety", po::value(&i.stemSafety)->default_value(i.stemSafety, text(i.stemSafety)), "time step as a fraction of the awake stems' stable limit")
         ("integration.dt_s", po::value(&i.forcedDt)->default_value(i.forcedDt, text(i.forcedDt)), "force this time step (0: automatic); refused if unstable")
         ("integration.anticipated_contacts", po::value(&i.anticipatedContacts)->default_value(i.anticipatedContacts, text(i.anticipatedContacts)), "new contacts the step must stay stable for")
-        ("integration.energy_tolerance", po::value(&i.energyTolerance)->default_value(i.energyTolerance, text(i.energyTolerance)), "relative energy imbalance that stops a run")
+        ("integration.energy_tolerance", po::value(&i.energyTolerance)->default_value(i.energyTolerance, text(i.energyTolerance)), "relative energy growth that stops a run")
+        ("integration.energy_warning", po::value(&i.energyWarning)->default_value(i.energyWarning, text(i.energyWarning)), "relative energy imbalance above which a run is flagged (runs.csv energy_flag, summary.json energy_flagged_runs)")
         ("stop.rest_distance_m", po::value(&st.restDistance)->default_value(st.restDistance, text(st.restDistance)), "the block rests once its centre stays within this distance of one point ...")
         ("stop.rest_time_s", po::value(&st.restTime)->default_value(st.restTime, text(st.restTime)), "... for this long, s")
         ("stop.max_time_s", po::value(&st.maxTime)->default_value(st.maxTime, text(st.maxTime)), "simulated time limit, s")
@@ -166,6 +167,8 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
     if (c.block.shape == BlockShapeKind::Cube && vm.count("block.d1_m")) c.block.volumeM3 = c.block.d1 * c.block.d1 * c.block.d1;
     if (!(c.integration.safety > 0 && c.integration.safety <= 1) || !(c.integration.stemSafety > 0 && c.integration.stemSafety <= 1))
         throw InputError("integration.safety and integration.stem_safety must be in (0, 1]");
+    if (!(c.integration.energyTolerance > 0 && c.integration.energyWarning > 0))
+        throw InputError("integration.energy_tolerance and integration.energy_warning must be positive");
     if (!(c.stop.maxTime > 0 && c.stop.restTime > 0 && c.stop.restDistance > 0))
         throw InputError("stop.max_time_s, stop.rest_time_s and stop.rest_distance_m must be positive");
     // Terrain paths are relative to the scene file.

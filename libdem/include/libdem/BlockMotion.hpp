@@ -11,7 +11,7 @@ namespace sylva::dem {
 
 class BlockMotion {
 public:
-    // Throws InputError if the block starts inside the soil.
+    // Throws InputError if the block starts inside the soil (or below its surface) or inside a stem.
     BlockMotion(const Scene& scene, const Release& start);
 
     // Advances by one stable step (or the forced one) and returns it. Throws SimulationError on
@@ -44,7 +44,9 @@ private:
     void detectContacts();
     SoilTouch& touch(std::uint32_t blockSphere, std::uint32_t soilSphere);
     double timeStep();
-    void audit(const Vec3& force, const Vec3& torque, double dt, double stored);
+    void audit(const Vec3& force, const Vec3& torque, double dt, double soilStored, double forestTerm);
+    // Throws InputError if a block sphere starts inside a standing stem.
+    void refuseStartInsideStem(const Scene& scene) const;
 
     const SceneConfig& cfg_;
     const SoilBed& soil_;
@@ -57,6 +59,7 @@ private:
     DissipationLedger ledger_;
     EnergyBudget budget_;
     ForestMotion forest_;
+    double lastBlockSide_ = 0, lastForestTerm_ = 0;  // the budget's two parts at the last audit
     double lastDt_ = 0;
     double t_ = 0;
     long steps_ = 0;

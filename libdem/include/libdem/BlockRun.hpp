@@ -23,6 +23,7 @@ struct EnergyBudget {
     double kinetic = 0, potential = 0, stored = 0;  // at the end
     double contactDamping = 0, friction = 0;        // dissipated
     double imbalance = 0;        // largest |total - initial| seen, relative to the energy converted
+    bool flagged = false;        // imbalance above integration.energy_warning: the budget did not close to it
 };
 
 // Where the energy the forest took went, J (the forest's part of the run's budget).

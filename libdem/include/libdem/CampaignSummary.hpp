@@ -20,6 +20,7 @@ struct CampaignSummary {
     double maxBounce50 = 0, shareBounceBelow1m = 0;
     double cpu50 = 0;
     double worstEnergyImbalance = 0;
+    int energyFlaggedRuns = 0;  // runs whose budget did not close to integration.energy_warning
     std::map<std::string, int> stopReasons;
 };
 

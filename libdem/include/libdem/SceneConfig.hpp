@@ -51,7 +51,8 @@ struct IntegrationConfig {
     double stemSafety = 0.8;    // and at most stemSafety x the awake stems' limit (a Gershgorin bound, 1.1-2.9x below the true one)
     double forcedDt = 0;        // > 0: use this step (refused if above the stable limit)
     int anticipatedContacts = 4;  // the step stays stable for this many new contacts at once
-    double energyTolerance = 0.1;  // audit: allowed relative energy imbalance before a run is refused
+    double energyTolerance = 0.1;  // audit: relative energy growth that stops a run (SimulationError)
+    double energyWarning = 0.05;   // audit: a run whose imbalance exceeds this is flagged (runs.csv energy_flag)
 };
 
 struct StopConfig {

@@ -87,6 +87,15 @@ HingeWork BendingLaw::advance(Moment& m, const Moment& d, Channel& ch) {
     return w;
 }
 
+HingeWork BendingLaw::snap() {
+    HingeWork w;
+    if (broken_) return w;
+    w.released = storedEnergy();
+    broken_ = true;
+    moment_.setZero();
+    return w;
+}
+
 Vec2 BendingLaw::dampingMoment(const Vec2& relativeRate) const {
     return broken_ ? Vec2::Zero() : Vec2(k_.viscosity * relativeRate);  // Eqs. 7-8
 }

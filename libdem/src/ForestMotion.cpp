@@ -46,7 +46,8 @@ double baseRadius(const PlacedTree& p) {
 bool fusedAtRest(const PlacedTree& a, std::size_t ca, const Stem& sa, const PlacedTree& b, std::size_t cb, const Stem& sb) {
     const double la = sa.connectionLength(), lb = sb.connectionLength();
     const double za0 = a.foot.z() + ca * la, za1 = za0 + la, zb0 = b.foot.z() + cb * lb, zb1 = zb0 + lb;
-    if (za1 < zb0 || zb1 < za0) return false;
+    constexpr double kSameHeight = 1e-6;  // m: heights are sums of connection lengths, equal up to round-off
+    if (za1 < zb0 - kSameHeight || zb1 < za0 - kSameHeight) return false;  // sharing an end height counts
     return horizontalDistance(a.foot, b.foot) < 0.5 * (sa.connectionDiameter(ca) + sb.connectionDiameter(cb));
 }
 

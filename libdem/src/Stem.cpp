@@ -16,6 +16,10 @@ namespace {
 
 const double kPi = std::acos(-1.0);
 constexpr double kBreastHeight = 1.3;  // m, where the DBH is measured
+// A connection folded (or twisted) this far has broken whatever Fig. 3 says: long, thin connections
+// reach M_Rupt only after turning more than pi (the rotation needed grows with l / D_con), where
+// the rotation vector would wrap round and the hinge's state lose its meaning.
+const double kFoldedConnection = kPi / 2;
 
 void validate(const StemGeometry& g, const StemParams& p) {
     const auto fail = [](const std::string& what) { throw InputError("stem geometry: " + what); };
@@ -122,7 +126,7 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         const Vec3 stretch = frame.conjugate() * chord - Vec3(0, 0, length_ + k.weightCompression);  // shear x, y; axial z
 
         const Vec2 bend = theta.head<2>();
-        const HingeWork w = k.bending.rotate(bend - k.bendingAngle);
+        const HingeWork w = theta.norm() > kFoldedConnection ? k.bending.snap() : k.bending.rotate(bend - k.bendingAngle);
         k.bendingAngle = bend;
         ledger.bendingPlasticity += w.dissipated;
         ledger.unloadingGain += w.created;
@@ -157,7 +161,11 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         torque[b] += onB - moment;
     }
     if (support_ == StemFoot::RootSpring) {
-        const Vec3 theta = rotationVector(footRest_.conjugate() * orientation[0]);
+        Vec3 theta = rotationVector(footRest_.conjugate() * orientation[0]);
+        // A foot turned past pi (an uprooted tree rolling over): follow it the long way round, as the
+        // incremental root law needs, rather than jump to the short way.
+        const double angle = theta.norm();
+        if (angle > 0 && (theta - rootAngle_).norm() > kPi) theta -= 2 * kPi / angle * theta;
         ledger.rootPlasticity += root_.rotate(theta - rootAngle_);  // Eqs. 9-10
         rootAngle_ = theta;
         torque[0] -= footRest_ * (inverseLeftJacobian(theta).transpose() * root_.moment());

@@ -38,6 +38,9 @@ public:
     // Reaching M_Rupt breaks the hinge: the moment drops to zero for good.
     HingeWork rotate(const Vec2& dTheta);
 
+    // Breaks the hinge now, whatever its moment (Stem: a connection folded beyond what any wood
+    // fibre survives); its stored energy is released.
+    HingeWork snap();
     const Vec2& moment() const { return moment_; }  // elastic-plastic moment, N m
     Vec2 dampingMoment(const Vec2& relativeRate) const;  // Eqs. 7-8, N m; zero once broken
     bool broken() const { return broken_; }

@@ -29,7 +29,7 @@ int runAssess(int argc, const char* const* argv) {
         ("baseline-runs", po::value<int>()->default_value(1000), "B: block runs without forest")
         ("seed", po::value<unsigned long>()->default_value(1), "seed; forests, runs and bootstrap seeds derive from it")
         ("bootstrap", po::value<int>()->default_value(2000), "bootstrap replicates of the PF50 interval")
-        ("confidence", po::value<double>()->default_value(0.95), "confidence level of the interval")
+        ("confidence", po::value<double>()->default_value(0.95, "0.95"), "confidence level of the interval")
         ("threads", po::value<int>()->default_value(0), "worker threads (0: all cores); results do not depend on it")
         ("out", po::value<std::string>(), "output directory: results.json, report/, and the campaign's runs (must be new or empty)")
         ("resume", po::bool_switch(), "continue the campaign in --out: run only what is missing (same options required)");

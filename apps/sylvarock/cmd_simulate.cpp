@@ -108,6 +108,9 @@ int runSimulate(int argc, const char* const* argv) {
                 s.energyLine50, s.energyLineMin, s.energyLineMax, s.lateralSd, s.meanSpeed50, s.maxSpeed50,
                 100 * s.shareBounceBelow1m);
     for (const auto& [k, v] : s.stopReasons) std::printf("stopped by %s: %d\n", k.c_str(), v);
+    std::printf("energy budget: worst imbalance %.2f %%; %d run(s) above integration.energy_warning (%.0f %%)%s\n",
+                100 * s.worstEnergyImbalance, s.energyFlaggedRuns, 100 * scene.config().integration.energyWarning,
+                s.energyFlaggedRuns > 0 ? ": flagged in runs.csv (energy_flag), rerun them with a smaller integration.safety" : "");
     std::printf("results in %s/\n", out.c_str());
     return 0;
 }

@@ -201,8 +201,12 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
     const Vec3 omega = block.angularVelocity();
     for (auto& a : awake_) {
         const Stem& s = a.stem;
+        std::uint32_t piece = 0;  // pieces of a broken stem move apart: each has its own contacts
         for (std::size_t c = 0; c < s.connectionCount(); ++c) {
-            if (s.broken(c)) continue;
+            if (s.broken(c)) {
+                ++piece;
+                continue;
+            }
             const Vec3& a0 = s.position[c];
             const Vec3& a1 = s.position[c + 1];
             const double r = 0.5 * s.connectionDiameter(c);
@@ -217,14 +221,14 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
                 const double overlap = rb + r - dist;
                 if (overlap > -approach) a.moving = true;
                 if (overlap <= 0 || dist == 0) continue;
-                // One contact per (block sphere, stem): the deepest connection; its history moves
-                // with it from one connection to the next.
+                // One contact per (block sphere, stem piece): the deepest connection; its history
+                // moves with it from one connection to the next.
                 BlockStemTouch* touch = nullptr;
                 for (auto& bt : blockTouches_)
-                    if (bt.blockSphere == i && bt.tree == a.tree) touch = &bt;
+                    if (bt.blockSphere == i && bt.tree == a.tree && bt.piece == piece) touch = &bt;
                 if (touch && touch->touching && touch->rawOverlap >= overlap) continue;
                 if (!touch) {
-                    blockTouches_.push_back(BlockStemTouch{i, a.tree, c, t, overlap, startedAt(overlap), ContactGeometry{}, false});
+                    blockTouches_.push_back(BlockStemTouch{i, a.tree, piece, c, t, overlap, startedAt(overlap), ContactGeometry{}, false});
                     touch = &blockTouches_.back();
                 }
                 ContactGeometry& g = touch->geometry;

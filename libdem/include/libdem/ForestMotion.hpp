@@ -68,9 +68,10 @@ private:
     struct ConnectionPair {
         std::size_t a, b, connectionA, connectionB;
     };
-    // A block sphere against a stem (the deepest of its connections this step).
+    // A block sphere against a stem, or against one piece of a broken stem (the deepest of its
+    // connections this step).
     struct BlockStemTouch {
-        std::uint32_t blockSphere, tree;
+        std::uint32_t blockSphere, tree, piece;
         std::size_t connection;
         double t;           // where along the connection
         double rawOverlap;  // before the onset offset: what picks the deepest connection

@@ -36,6 +36,10 @@ std::vector<double> numberList(const std::string& option, const std::string& tex
 // True when standard error is a terminal (progress bars are drawn only then).
 bool stderrIsTerminal();
 
+// Exit status of a command that finished and wrote its results, but with runs that stopped on a
+// numerical error (left out of the statistics and listed): scripts must not take it for success.
+inline constexpr int kRunsFailed = 3;
+
 // `--forest F.csv` as simulate and scene export take it: the scene key forest.file, made absolute
 // (paths in a scene are relative to the scene file) and placed first so that it wins.
 inline constexpr const char* kForestHelp =

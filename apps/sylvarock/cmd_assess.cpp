@@ -76,6 +76,11 @@ int runAssess(int argc, const char* const* argv) {
                     assess::structureCode(r.structure).c_str(), r.pf50, r.pf50Ci.low, r.pf50Ci.high, r.dist50, r.rankPf50,
                     r.inventory.basalAreaM2Ha);
     std::printf("results in %s/results.json, report in %s/report/report.md (%.1f s)\n", a.outDir.c_str(), a.outDir.c_str(), wall);
+    if (!results.failedRuns.empty()) {
+        std::cerr << "sylvarock assess: " << results.failedRuns.size()
+                  << " run(s) stopped on a numerical error and are left out (results.json failed_runs)\n";
+        return kRunsFailed;
+    }
     return 0;
 }
 

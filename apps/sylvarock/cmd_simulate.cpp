@@ -101,17 +101,29 @@ int runSimulate(int argc, const char* const* argv) {
     if (!vm["no-figures"].as<bool>()) drawFigures(out, scene, results);
 
     std::printf("%d runs in %.1f s wall (median %.3f s CPU per run)\n", s.runs, wall, s.cpu50);
-    std::printf("run-out along the slope: Dist50 %.1f m (p10 %.1f, p90 %.1f); horizontal %.1f m\n", s.dist50,
-                s.runoutQuantiles.at(10), s.runoutQuantiles.at(90), s.horizontal50);
-    std::printf("energy line %.1f deg (%.1f-%.1f); lateral sd %.1f m; speed median %.1f m/s (max %.1f); "
-                "bounce <= 1 m in %.0f %% of runs\n",
-                s.energyLine50, s.energyLineMin, s.energyLineMax, s.lateralSd, s.meanSpeed50, s.maxSpeed50,
-                100 * s.shareBounceBelow1m);
+    if (s.failedRuns < s.runs) {
+        std::printf("run-out along the slope: Dist50 %.1f m (p10 %.1f, p90 %.1f); horizontal %.1f m\n", s.dist50,
+                    s.runoutQuantiles.at(10), s.runoutQuantiles.at(90), s.horizontal50);
+        std::printf("energy line %.1f deg (%.1f-%.1f); lateral sd %.1f m; speed median %.1f m/s (max %.1f); "
+                    "bounce <= 1 m in %.0f %% of runs\n",
+                    s.energyLine50, s.energyLineMin, s.energyLineMax, s.lateralSd, s.meanSpeed50, s.maxSpeed50,
+                    100 * s.shareBounceBelow1m);
+    }
     for (const auto& [k, v] : s.stopReasons) std::printf("stopped by %s: %d\n", k.c_str(), v);
     std::printf("energy budget: worst imbalance %.2f %%; %d run(s) above integration.energy_warning (%.0f %%)%s\n",
                 100 * s.worstEnergyImbalance, s.energyFlaggedRuns, 100 * scene.config().integration.energyWarning,
                 s.energyFlaggedRuns > 0 ? ": flagged in runs.csv (energy_flag), rerun them with a smaller integration.safety" : "");
     std::printf("results in %s/\n", out.c_str());
+    if (s.failedRuns > 0) {
+        std::cerr << "sylvarock simulate: " << s.failedRuns << " of " << s.runs
+                  << " runs stopped on a numerical error and are left out of the statistics (stop_reason failed in "
+                     "runs.csv):\n";
+        int shown = 0;
+        for (const auto& r : results)
+            if (r.reason == dem::StopReason::Failed && shown++ < 3)
+                std::cerr << "  run " << r.run << " (seed " << r.seed << "): " << r.failure << "\n";
+        return kRunsFailed;
+    }
     return 0;
 }
 

@@ -51,6 +51,11 @@ AssessmentResults runAssessment(const AssessmentOptions& options) {
     RunnerSettings runner;
     runner.threads = options.threads;
     runner.onRunDone = options.onRunDone;
+    runner.onRunFailed = [&options](const std::string& campaign, const dem::RunResult& r) {
+        if (options.onNote)
+            options.onNote("warning: " + campaign + " run " + std::to_string(r.run) + " (seed " + std::to_string(r.seed) +
+                           ") stopped on a numerical error and is left out: " + r.failure);
+    };
     runMissing(plan, store, bareScene, catalogues, runner);
 
     BootstrapSettings bootstrap;

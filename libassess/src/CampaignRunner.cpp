@@ -102,9 +102,11 @@ void runMissing(const std::vector<Campaign>& plan, CampaignStore& store, std::sh
                 options.only = {run};
                 options.seed = campaign.runSeed;
                 options.threads = 1;
-                const RunRecord record = toRecord(dem::runCampaign(*scene, options).front());
+                const dem::RunResult result = dem::runCampaign(*scene, options).front();
+                const RunRecord record = toRecord(result);
                 {
                     std::lock_guard<std::mutex> lock(storeMutex);
+                    if (result.reason == dem::StopReason::Failed && settings.onRunFailed) settings.onRunFailed(campaign.id, result);
                     store.log(c).append(record);
                     ++done;
                     if (settings.onRunDone) settings.onRunDone(campaign.id, done, total);

@@ -11,13 +11,20 @@ namespace sylva::assess {
 
 namespace {
 
-std::vector<RunRecord> completeRuns(const CampaignStore& store, std::size_t c, const Campaign& campaign) {
+// The campaign's runs that have a run-out; those that stopped on a numerical error are named in
+// `failed` instead (they are stored, so a resumed campaign does not run them again).
+std::vector<RunRecord> completeRuns(const CampaignStore& store, std::size_t c, const Campaign& campaign,
+                                    std::vector<std::string>& failed) {
     const auto& records = store.log(c).records();
     if (static_cast<int>(records.size()) != campaign.runs)
         throw std::logic_error("campaign " + campaign.id + " is not complete: " + std::to_string(records.size()) + " of " +
                                std::to_string(campaign.runs) + " runs");
     std::vector<RunRecord> runs;
-    for (const auto& [run, record] : records) runs.push_back(record);
+    for (const auto& [run, record] : records)
+        if (record.reason == dem::toString(dem::StopReason::Failed))
+            failed.push_back(campaign.id + " run " + std::to_string(run) + " (seed " + std::to_string(record.seed) + ")");
+        else
+            runs.push_back(record);
     return runs;
 }
 
@@ -58,7 +65,7 @@ AssessmentResults analyse(const AssessmentDesign& design, const std::vector<Camp
     std::vector<double> baseline;
     for (std::size_t c = 0; c < plan.size(); ++c) {
         const Campaign& campaign = plan[c];
-        std::vector<RunRecord> runs = completeRuns(store, c, campaign);
+        std::vector<RunRecord> runs = completeRuns(store, c, campaign, out.failedRuns);
         if (!campaign.forested) {
             out.baseline = std::move(runs);
             continue;

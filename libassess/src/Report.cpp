@@ -123,6 +123,12 @@ void writeMarkdown(const std::string& path, const AssessmentResults& res, const 
        << " replicates) that resamples the forest realisations, then the runs within each, and the runs without forest, "
        << "so it carries both the forest-to-forest and the block-to-block spread.\n\n"
        << "Without forest: Dist50 = " << fixed(res.baselineDist50, 1) << " m over " << res.baseline.size() << " runs.\n\n";
+    if (!res.failedRuns.empty()) {
+        md << "**" << res.failedRuns.size() << " run(s) stopped on a numerical error and are left out of every figure "
+           << "and index below** (`sylvarock assess` printed why):";
+        for (const auto& f : res.failedRuns) md << " " << f << ";";
+        md << "\n\n";
+    }
 
     for (auto structure : assessedStructures()) {
         const std::string code = structureCode(structure);
@@ -228,6 +234,10 @@ void writeResultsJson(const std::string& path, const AssessmentResults& res) {
         stopReasonsField(j, pooled(r));
         j.endObject();
     }
+    j.endArray();
+
+    j.key("failed_runs").beginArray();
+    for (const auto& f : res.failedRuns) j.value(f);
     j.endArray();
 
     j.key("rankings").beginObject();

@@ -46,7 +46,7 @@ bool parseInteger(const std::string& text, long long& out) {
 }
 
 bool knownReason(const std::string& r) {
-    for (auto reason : {dem::StopReason::Rest, dem::StopReason::LeftDomain, dem::StopReason::TimeLimit})
+    for (auto reason : {dem::StopReason::Rest, dem::StopReason::LeftDomain, dem::StopReason::TimeLimit, dem::StopReason::Failed})
         if (r == dem::toString(reason)) return true;
     return false;
 }

@@ -16,6 +16,7 @@ std::string toString(StopReason r) {
         case StopReason::Rest: return "rest";
         case StopReason::LeftDomain: return "left_domain";
         case StopReason::TimeLimit: return "time_limit";
+        case StopReason::Failed: return "failed";
     }
     return "?";
 }
@@ -97,6 +98,20 @@ Release drawRelease(const Scene& scene, std::uint64_t seed) {
     const double y = rel.yMax > rel.yMin ? rng.uniform(rel.yMin, rel.yMax) : rel.yMin;
     refuseOutside(rel.x, y, "release point", "");
     return {Vec3(rel.x, y, soil.surfaceHeight(rel.x, y) + rel.fallHeight), q};
+}
+
+RunResult failedRun(const Scene& scene, int run, std::uint64_t seed, const std::string& why) {
+    RunResult r;
+    r.run = run;
+    r.seed = seed;
+    r.release = drawRelease(scene, seed).position;
+    const double none = std::nan("");
+    r.stop = Vec3::Constant(none);
+    r.runoutAlongSlope = r.runoutHorizontal = r.energyLineDeg = none;
+    r.reason = StopReason::Failed;
+    r.energy.flagged = true;
+    r.failure = why;
+    return r;
 }
 
 RunResult simulateBlock(const Scene& scene, int run, std::uint64_t seed, const RunOptions& options) {

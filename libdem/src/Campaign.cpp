@@ -47,10 +47,11 @@ std::vector<RunResult> runCampaign(const Scene& scene, const CampaignOptions& op
                 ++done;
                 if (options.onRunDone) options.onRunDone(results[slot], done, total);
             } catch (const SimulationError& e) {
+                RunResult r = failedRun(scene, i, runSeed(options.seed, i), e.what());
                 std::lock_guard<std::mutex> lock(mutex);
-                if (!failure)
-                    failure = std::make_exception_ptr(SimulationError("run " + std::to_string(i) + " (seed " +
-                                                                      std::to_string(runSeed(options.seed, i)) + "): " + e.what()));
+                results[slot] = std::move(r);
+                ++done;
+                if (options.onRunDone) options.onRunDone(results[slot], done, total);
             } catch (...) {
                 std::lock_guard<std::mutex> lock(mutex);
                 if (!failure) failure = std::current_exception();

@@ -26,6 +26,11 @@ CampaignSummary summarise(const std::vector<RunResult>& runs) {
     std::vector<double> runout, horiz, y, el, vmean, vmax, bounce, cpu;
     int low = 0;
     for (const auto& r : runs) {
+        ++s.stopReasons[toString(r.reason)];
+        if (r.reason == StopReason::Failed) {
+            ++s.failedRuns;
+            continue;
+        }
         runout.push_back(r.runoutAlongSlope);
         horiz.push_back(r.runoutHorizontal);
         y.push_back(r.stop.y());
@@ -37,8 +42,8 @@ CampaignSummary summarise(const std::vector<RunResult>& runs) {
         low += r.maxBounce <= 1.0;
         s.worstEnergyImbalance = std::max(s.worstEnergyImbalance, r.energy.imbalance);
         s.energyFlaggedRuns += r.energy.flagged;
-        ++s.stopReasons[toString(r.reason)];
     }
+    if (runout.empty()) return s;
     s.dist50 = quantile(runout, 0.5);
     for (int p : {5, 10, 25, 50, 75, 90, 95}) s.runoutQuantiles[p] = quantile(runout, p / 100.0);
     s.horizontal50 = quantile(horiz, 0.5);
@@ -50,7 +55,7 @@ CampaignSummary summarise(const std::vector<RunResult>& runs) {
     s.meanSpeed50 = quantile(vmean, 0.5);
     s.maxSpeed50 = quantile(vmax, 0.5);
     s.maxBounce50 = quantile(bounce, 0.5);
-    s.shareBounceBelow1m = static_cast<double>(low) / runs.size();
+    s.shareBounceBelow1m = static_cast<double>(low) / runout.size();
     s.cpu50 = quantile(cpu, 0.5);
     return s;
 }
@@ -136,6 +141,7 @@ void writeSummaryJson(const std::string& path, const CampaignSummary& s, double 
     j.field("max_bounce50_m", s.maxBounce50).field("share_max_bounce_le_1m", s.shareBounceBelow1m);
     j.field("cpu_per_run50_s", s.cpu50).field("worst_energy_imbalance", s.worstEnergyImbalance);
     j.field("energy_flagged_runs", s.energyFlaggedRuns);
+    j.field("failed_runs", s.failedRuns);
     j.key("stop_reasons").beginObject();
     for (const auto& [k, v] : s.stopReasons) j.field(k, v);
     j.endObject();

@@ -2,6 +2,7 @@
 // dropped, everything else reads back to the very same numbers.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -127,3 +128,18 @@ TEST_F(RunLogReader, RefusesAnotherCampaignsSeedsAndAForeignFile) {
 }
 
 }  // namespace
+
+// A run that stopped on a numerical error is stored as failed (so a resumed campaign does not run
+// it again), its missing run-out as NaN, and reads back as such.
+TEST(RunLineParser, FailedRunReadsBackWithoutRunout) {
+    RunRecord r = record(4);
+    r.reason = "failed";
+    r.runoutM = r.runoutHorizontalM = r.stopX = r.stopY = r.stopZ = r.energyLineDeg = std::nan("");
+    const auto back = sylva::assess::parseRunLine(sylva::assess::formatRunLine(r));
+    ASSERT_TRUE(back.has_value());
+    EXPECT_EQ(back->reason, "failed");
+    EXPECT_TRUE(std::isnan(back->runoutM));
+    EXPECT_EQ(back->seed, r.seed);
+    r.reason = "exploded";  // not a stop reason: the line is refused
+    EXPECT_FALSE(sylva::assess::parseRunLine(sylva::assess::formatRunLine(r)).has_value());
+}

@@ -2,6 +2,9 @@
 // slope reproducing the paper's Sect. 3.2 without forest.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -66,6 +69,44 @@ TEST(SimulateCli, WritesRunsSummaryAndTrajectories) {
 TEST(SimulateCli, BadSceneKeyIsRefusedWithItsName) {
     EXPECT_NE(cli(std::string("simulate --scene ") + SYLVAROCK_DATA + "/scenes/no-forest.ini --set soil.frction_deg=3 --out /tmp/x"), 0);
     EXPECT_NE(cli("simulate --scene /nonexistent.ini --out /tmp/x"), 0);
+}
+
+// A run that goes numerically wrong is kept as failed, with its message, and left out of the
+// statistics; the other runs of the campaign still run. Forcing a step 20 times the soil contacts'
+// limit makes every run fail at its first landing.
+TEST(Campaign, FailedRunsAreKeptNamedAndLeftOutOfTheStatistics) {
+    const Scene scene(sylva::dem::testing::straightSlopeScene(30, 120, 40, {"release.x_m=10", "release.y_m=20", "integration.dt_s=0.05"}));
+    CampaignOptions o;
+    o.runs = 3;
+    o.threads = 2;
+    int reported = 0;
+    o.onRunDone = [&reported](const RunResult&, int, int) { ++reported; };
+    const auto results = runCampaign(scene, o);
+    ASSERT_EQ(results.size(), 3u);
+    EXPECT_EQ(reported, 3);
+    for (const auto& r : results) {
+        EXPECT_EQ(r.reason, StopReason::Failed);
+        EXPECT_NE(r.failure.find("stable limit"), std::string::npos) << r.failure;
+        EXPECT_TRUE(std::isnan(r.runoutAlongSlope));
+        EXPECT_EQ(r.release.x(), 10.0);
+    }
+    const CampaignSummary s = summarise(results);
+    EXPECT_EQ(s.runs, 3);
+    EXPECT_EQ(s.failedRuns, 3);
+    EXPECT_EQ(s.stopReasons.at("failed"), 3);
+    EXPECT_EQ(s.dist50, 0);  // nothing to take a median of
+}
+
+TEST(SimulateCli, FailedRunsGiveTheirOwnExitStatusAndRows) {
+    const auto out = std::filesystem::temp_directory_path() / "sylvarock-tests" / "simulate-failed";
+    std::filesystem::remove_all(out);
+    const int status = cli(std::string("simulate --scene ") + SYLVAROCK_DATA +
+                           "/scenes/no-forest.ini --runs 2 --set integration.dt_s=0.05 --no-figures --out " + out.string());
+    EXPECT_EQ(WEXITSTATUS(status), 3);  // kRunsFailed: results written, but not a success
+    const std::string runs = slurp((out / "runs.csv").string());
+    EXPECT_EQ(std::count(runs.begin(), runs.end(), '\n'), 3);
+    EXPECT_NE(runs.find(",failed,"), std::string::npos);
+    EXPECT_NE(slurp((out / "summary.json").string()).find("\"failed_runs\": 2"), std::string::npos);
 }
 
 // Validation (short form; SYLVAROCK_LONG_VALIDATION=1 runs 300 blocks): without forest, the stand-in

@@ -11,6 +11,7 @@
 
 #include "libassess/CampaignPlan.hpp"
 #include "libassess/CampaignStore.hpp"
+#include "libdem/BlockRun.hpp"
 #include "libdem/Scene.hpp"
 #include "libstand/StandCatalogue.hpp"
 
@@ -20,6 +21,8 @@ struct RunnerSettings {
     int threads = 0;  // 0: all cores
     // After each finished run (serialised): the campaign's id, runs done and runs to do in this call.
     std::function<void(const std::string& campaign, int done, int total)> onRunDone;
+    // A run that stopped on a numerical error (stored as failed, left out of the analysis).
+    std::function<void(const std::string& campaign, const dem::RunResult& run)> onRunFailed;
 };
 
 // The part of the slope the forests cover (Sect. 2.3.2): from 30 m down-slope of the release point to

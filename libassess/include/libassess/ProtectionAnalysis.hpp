@@ -42,6 +42,7 @@ struct AssessmentResults {
     std::vector<RunRecord> baseline;     // in run order
     double baselineDist50 = 0;
     std::vector<StructureAssessment> stands;  // design order, A then NA
+    std::vector<std::string> failedRuns;  // runs that stopped on a numerical error, left out of everything above
     std::vector<DendrometricCorrelation> correlations;  // A, NA
     // Where the blocks can be (the map's frame) and where the forests start, m.
     double terrainXmin = 0, terrainXmax = 0, terrainYmin = 0, terrainYmax = 0, forestStartX = 0;

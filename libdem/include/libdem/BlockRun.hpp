@@ -8,8 +8,10 @@
 
 namespace sylva::dem {
 
-enum class StopReason { Rest, LeftDomain, TimeLimit };
-std::string toString(StopReason r);  // "rest", "left_domain", "time_limit"
+// Failed: the run stopped on a SimulationError (its message in RunResult::failure); it has no
+// run-out and campaigns leave it out of their statistics.
+enum class StopReason { Rest, LeftDomain, TimeLimit, Failed };
+std::string toString(StopReason r);  // "rest", "left_domain", "time_limit", "failed"
 
 struct TrajectorySample {
     double t;
@@ -59,6 +61,7 @@ struct RunResult {
     std::vector<TreeImpact> impacts;
     ForestEnergy forestEnergy;
     std::vector<TrajectorySample> trajectory;  // filled when asked for
+    std::string failure;  // StopReason::Failed: what stopped it
 };
 
 struct RunOptions {
@@ -78,5 +81,7 @@ Release drawRelease(const Scene& scene, std::uint64_t seed);
 // whichever thread runs it. Throws SimulationError on NaN, energy growth or an unstable forced step,
 // InputError on an impossible release (outside the terrain, inside the soil).
 RunResult simulateBlock(const Scene& scene, int run, std::uint64_t seed, const RunOptions& options = {});
+// The record of a run that stopped on a SimulationError: its release, no run-out (NaN), the message.
+RunResult failedRun(const Scene& scene, int run, std::uint64_t seed, const std::string& why);
 
 }  // namespace sylva::dem

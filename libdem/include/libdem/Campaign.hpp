@@ -27,8 +27,9 @@ struct CampaignOptions {
     std::function<void(const RunResult&, int done, int total)> onRunDone;
 };
 
-// Results in run order (or in the order of `only`). A run that fails (SimulationError) stops the campaign with that error,
-// prefixed by the run's index and seed so it can be replayed alone.
+// Results in run order (or in the order of `only`). A run that fails numerically (SimulationError)
+// is kept as StopReason::Failed with its message (failedRun) and the others go on; any other error
+// (a bad release: InputError) stops the campaign, prefixed by the run's index and seed.
 std::vector<RunResult> runCampaign(const Scene& scene, const CampaignOptions& options);
 
 }  // namespace sylva::dem

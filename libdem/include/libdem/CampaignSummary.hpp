@@ -21,6 +21,7 @@ struct CampaignSummary {
     double cpu50 = 0;
     double worstEnergyImbalance = 0;
     int energyFlaggedRuns = 0;  // runs whose budget did not close to integration.energy_warning
+    int failedRuns = 0;         // stopped on a SimulationError: counted here, left out of every statistic above
     std::map<std::string, int> stopReasons;
 };
 

@@ -228,7 +228,7 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
                     if (bt.blockSphere == i && bt.tree == a.tree && bt.piece == piece) touch = &bt;
                 if (touch && touch->touching && touch->rawOverlap >= overlap) continue;
                 if (!touch) {
-                    blockTouches_.push_back(BlockStemTouch{i, a.tree, piece, c, t, overlap, startedAt(overlap), ContactGeometry{}, false});
+                    blockTouches_.push_back(BlockStemTouch{i, a.tree, piece, c, t, overlap, startedAt(overlap), ContactGeometry{}, false, c, overlap});
                     touch = &blockTouches_.back();
                 }
                 ContactGeometry& g = touch->geometry;
@@ -248,6 +248,20 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
     }
     blockTouches_.erase(std::remove_if(blockTouches_.begin(), blockTouches_.end(), [](const BlockStemTouch& c) { return !c.touching; }),
                         blockTouches_.end());
+    // A contact that moved to another connection may find it much deeper in the block (a bent or
+    // lying stem, a contact that began with an offset): like a new contact, it takes on only the
+    // overlap one step's motion can bring, or its spring would store energy no motion loaded.
+    for (auto& touch : blockTouches_) {
+        if (touch.connection != touch.lastConnection) {
+            const double jump = touch.rawOverlap - touch.lastRawOverlap - kMaxOnsetOverlap;
+            if (jump > 0) {
+                touch.history.overlapOffset += jump;
+                touch.geometry.overlap = std::max(0.0, touch.rawOverlap - touch.history.overlapOffset);
+            }
+        }
+        touch.lastConnection = touch.connection;
+        touch.lastRawOverlap = touch.rawOverlap;
+    }
 }
 
 // Pairs of connections of different awake stems that may touch: within their radii plus the skin

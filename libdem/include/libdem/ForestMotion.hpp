@@ -78,6 +78,8 @@ private:
         ContactHistory history;
         ContactGeometry geometry;
         bool touching;
+        std::size_t lastConnection;  // at the previous step
+        double lastRawOverlap;
     };
     struct StemStemTouch {
         std::uint32_t treeA, treeB;

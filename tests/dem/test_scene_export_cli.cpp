@@ -1,10 +1,8 @@
 // `sylvarock scene export`: stems.csv holds every stem of the forest at rest, node by node, with the
 // cone's radii and the feet on the terrain; a forest file that cannot be read is refused.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -12,23 +10,13 @@
 #include <string>
 #include <vector>
 
+#include "../CliRun.hpp"
+
 namespace {
 
-struct CliRun {
-    int status;
-    std::string output;  // stdout and stderr
-};
+using sylva::testing::CliRun;
 
-CliRun sceneExport(const std::string& arguments) {
-    const std::string command = std::string(SYLVAROCK_CLI) + " scene export " + arguments + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    CliRun run{-1, {}};
-    char buffer[4096];
-    while (std::fgets(buffer, sizeof buffer, pipe)) run.output += buffer;
-    const int raw = pclose(pipe);
-    run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    return run;
-}
+CliRun sceneExport(const std::string& arguments) { return sylva::testing::runCli("scene export " + arguments); }
 
 struct Node {
     int node, linkedTo;

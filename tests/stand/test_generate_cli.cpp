@@ -1,9 +1,7 @@
 // `sylvarock generate` end to end: the interface the outside checks call, file naming of realisations,
 // and the exit status and message of bad options.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <cstdio>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -13,24 +11,15 @@
 
 using namespace sylva::stand;
 
+#include "../CliRun.hpp"
+
 namespace {
 
-struct CliRun {
-    int status;
-    std::string output;  // stdout and stderr
-};
+using sylva::testing::CliRun;
 
 CliRun generate(const std::string& arguments) {
     const std::string stand = std::string(SYLVAROCK_DATA) + "/stands/PY2";
-    const std::string command = std::string(SYLVAROCK_CLI) + " generate --stems " + stand + "_stems.csv --plots " + stand +
-                                "_plots.csv " + arguments + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    CliRun run{-1, {}};
-    char buffer[4096];
-    while (std::fgets(buffer, sizeof buffer, pipe)) run.output += buffer;
-    const int raw = pclose(pipe);
-    run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    return run;
+    return sylva::testing::runCli("generate --stems " + stand + "_stems.csv --plots " + stand + "_plots.csv " + arguments);
 }
 
 std::string slurp(const std::string& path) {

@@ -9,8 +9,8 @@
 //    takes from the block (its kinetic energy before minus after the impact).
 // The dynamics in a forest are chaotic: paired run-out errors do not vanish however fine the setting,
 // so the distribution-level errors are the ones to judge a setting by. The reference's forested runs
-// cost ~100 times the defaults' (373 s against 3.5 s CPU each, measured), so they set the study's
-// time: 4 runs per setting by default keep it near 15 minutes on 2 threads.
+// cost ~4 times the defaults' (5.7 s against 1.5 s CPU each) and 0.25 m nodes ~13 times: 12 runs per
+// setting took 6 minutes on 2 threads (docs/accuracy.md).
 // Prints one CSV row per setting (to stdout or --out); bench/accuracy_plot.sh draws error against CPU
 // time with the Pareto front. Run from anywhere: bench_accuracy --help.
 #include <algorithm>

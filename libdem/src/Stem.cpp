@@ -126,7 +126,14 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         const Vec3 stretch = frame.conjugate() * chord - Vec3(0, 0, length_ + k.weightCompression);  // shear x, y; axial z
 
         const Vec2 bend = theta.head<2>();
-        const HingeWork w = theta.norm() > kFoldedConnection ? k.bending.snap() : k.bending.rotate(bend - k.bendingAngle);
+        // The moment changes along the connection by chord x f_shear (the connection's statics), so
+        // one end carries half of that change more than the middle: yield and rupture happen there.
+        Vec2 offset = Vec2::Zero();
+        if (params_.bending.criticalSection) {
+            const Vec2 change = 0.5 * length_ * k.shear * Vec2(-stretch.y(), stretch.x());
+            offset = k.bending.moment().dot(change) >= 0 ? change : Vec2(-change);
+        }
+        const HingeWork w = theta.norm() > kFoldedConnection ? k.bending.snap() : k.bending.rotate(bend - k.bendingAngle, offset);
         k.bendingAngle = bend;
         ledger.bendingPlasticity += w.dissipated;
         ledger.unloadingGain += w.created;

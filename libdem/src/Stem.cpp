@@ -127,7 +127,8 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
 
         const Vec2 bend = theta.head<2>();
         // The moment changes along the connection by chord x f_shear (the connection's statics), so
-        // one end carries half of that change more than the middle: yield and rupture happen there.
+        // one end carries half of that change more than the middle: yield and rupture happen there
+        // (our correction to Eqs. 2-6, derived and measured in docs/model-stems.md).
         Vec2 offset = Vec2::Zero();
         if (params_.bending.criticalSection) {
             const Vec2 change = 0.5 * length_ * k.shear * Vec2(-stretch.y(), stretch.x());

@@ -247,6 +247,8 @@ TEST(BendingLaw, CriticalSectionYieldsAndBreaksAtTheOffsetMomentAndBooksTheConne
         breaking.rotate(Vec2(1.2 * thetaRupt / 4000, 0), Vec2(offset, 0));
     }
     ASSERT_TRUE(breaking.broken());
+    // The moment before the breaking increment is short of M_Rupt - offset by at most what one
+    // increment adds on the plastic branch, K_Plast times its rotation.
     EXPECT_NEAR(lastMoment, k.ruptureMoment - offset, 1.2 * thetaRupt / 4000 * k.plastic);
 }
 

@@ -1,6 +1,5 @@
 #include "libdem/BendingLaw.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 namespace sylva::dem {
@@ -24,21 +23,20 @@ HingeCoefficients bendingCoefficients(const BendingParams& p, double diameter, d
 BendingLaw::BendingLaw(const HingeCoefficients& k, BendingReading reading)
     : k_(k), reading_(reading), channels_{{k.yieldMoment}, {k.yieldMoment}} {}
 
-HingeWork BendingLaw::rotate(const Vec2& dTheta, const Vec2& offset) {
+HingeWork BendingLaw::rotate(const Vec2& dTheta) {
     if (broken_) return {};
     if (reading_ == BendingReading::Isotropic) {
-        Moment m = moment_, d = dTheta, o = offset;
-        const HingeWork w = advance(m, d, o, channels_[0]);
+        Moment m = moment_, d = dTheta;
+        const HingeWork w = advance(m, d, channels_[0]);
         moment_ = broken_ ? Vec2::Zero() : Vec2(m);
         return w;
     }
     HingeWork total;
     for (int axis = 0; axis < 2 && !broken_; ++axis) {
-        Moment m(1), d(1), o(1);
+        Moment m(1), d(1);
         m << moment_[axis];
         d << dTheta[axis];
-        o << offset[axis];
-        const HingeWork w = advance(m, d, o, channels_[axis]);
+        const HingeWork w = advance(m, d, channels_[axis]);
         moment_[axis] = m[0];
         total.dissipated += w.dissipated;
         total.created += w.created;
@@ -52,58 +50,40 @@ HingeWork BendingLaw::rotate(const Vec2& dTheta, const Vec2& offset) {
     return total;
 }
 
-// An elastic trial with the current stiffness; what takes the critical section (the connection's
-// moment plus `offset`) beyond its elastic domain |M| <= M_y is rotation along the plastic branch,
-// where the section's moment grows as dM = K_Plast dtheta (Eq. 3) and the domain grows with it
-// (unloading and reloading then follow K_Unld up to the largest moment reached, Fig. 3). With no
-// offset, in one dimension, this is the closed-form trilinear path whatever the size of the increment.
-// The energy is booked from the connection's own moment (the one its nodes feel): the work along the
-// elastic piece up to the yield point and along the plastic piece, less what the connection stores.
-// The offset may change between increments with no rotation at all; the return onto the yield
-// surface then dissipates exactly the stored energy it removes.
-HingeWork BendingLaw::advance(Moment& m, const Moment& d, const Moment& offset, Channel& ch) {
+// An elastic trial with the current stiffness; what lies beyond the elastic domain |M| <= M_y is
+// rotation along the plastic branch, where dM = K_Plast dtheta (Eq. 3) and the domain grows with the
+// moment (unloading and reloading then follow K_Unld up to the largest moment reached, Fig. 3).
+// In one dimension this is the closed-form trilinear path, whatever the size of the increment.
+HingeWork BendingLaw::advance(Moment& m, const Moment& d, Channel& ch) {
     const double k = stiffness(ch);
     const Moment trial = m + k * d;
-    const double t = (trial + offset).norm();
+    const double t = trial.norm();
     if (t <= ch.yieldMoment) {
         m = trial;
         return {};
     }
-    // Fraction s of the increment taken elastically before the section reaches its yield moment.
-    const Moment a = m + offset, b = k * d;
-    double s = 0;
-    if (a.norm() < ch.yieldMoment) {
-        const double bb = b.squaredNorm(), ab = a.dot(b), aa = a.squaredNorm();
-        s = (-ab + std::sqrt(std::max(0.0, ab * ab - bb * (aa - ch.yieldMoment * ch.yieldMoment)))) / bb;
-    }
-    const Moment atYield = m + s * b;
-    const Moment n = (trial + offset) / t;
     HingeWork w;
     if (!ch.yielded) {
-        w.created = 0.5 * atYield.squaredNorm() * (1 / k_.unloading - 1 / k_.elastic);
+        w.created = 0.5 * ch.yieldMoment * ch.yieldMoment * (1 / k_.unloading - 1 / k_.elastic);
         ch.yielded = true;
     }
-    const double storedBefore = 0.5 * m.squaredNorm() / k;
-    const double elasticWork = 0.5 * (m + atYield).dot(s * d);
-    const double delta = (t - ch.yieldMoment) / k;  // rotation beyond the yield point
-    double reached = ch.yieldMoment + k_.plastic * delta;
-    double used = 1 - s;  // of the increment, along the plastic branch
+    // Plastic rotation delta from moment M0 along K_Plast: the work M0 delta + K_Plast delta^2 / 2
+    // minus the growth of the energy recoverable along K_Unld.
+    const auto plasticWork = [this](double m0, double delta) {
+        return delta * (m0 + 0.5 * k_.plastic * delta) * (1 - k_.plastic / k_.unloading);
+    };
+    const double delta = (t - ch.yieldMoment) / k;
+    const double reached = ch.yieldMoment + k_.plastic * delta;
     if (reached >= k_.ruptureMoment) {
-        used *= (k_.ruptureMoment - ch.yieldMoment) / (reached - ch.yieldMoment);
-        reached = k_.ruptureMoment;
+        w.dissipated = plasticWork(ch.yieldMoment, (k_.ruptureMoment - ch.yieldMoment) / k_.plastic);
+        w.released = 0.5 * k_.ruptureMoment * k_.ruptureMoment / k_.unloading;
         broken_ = true;
-    }
-    const Moment after = n * reached - offset;
-    const double plasticWork = 0.5 * (atYield + after).dot(used * d);
-    const double storedAfter = 0.5 * after.squaredNorm() / k_.unloading;
-    w.dissipated = elasticWork + plasticWork - (storedAfter - storedBefore) + w.created;
-    if (broken_) {
-        w.released = storedAfter;
         m.setZero();
         return w;
     }
+    w.dissipated = plasticWork(ch.yieldMoment, delta);
     ch.yieldMoment = reached;
-    m = after;
+    m = trial * (reached / t);
     return w;
 }
 

@@ -88,7 +88,7 @@ po::options_description sceneKeys(SceneConfig& c, std::string& shape, std::strin
         ("stem.e_unld_pa", po::value(&bend.eUnld)->default_value(bend.eUnld, text(bend.eUnld)), "E_Unld (Eq. 4)")
         ("stem.sigma_elast_pa", po::value(&bend.sigmaElast)->default_value(bend.sigmaElast, text(bend.sigmaElast)), "sigma_Elast (Eq. 5)")
         ("stem.sigma_rupt_pa", po::value(&bend.sigmaRupt)->default_value(bend.sigmaRupt, text(bend.sigmaRupt)), "sigma_Rupt (Eq. 6)")
-        ("stem.critical_section", po::value(&bend.criticalSection)->default_value(bend.criticalSection, text(bend.criticalSection)), "yield and rupture at the connection's more loaded end (true) or at its mean moment (false: Fig. 3 as the paper reads; docs/model-stems.md)")
+        ("stem.sections", po::value(&bend.sections)->default_value(bend.sections, text(bend.sections)), "sections per connection where Fig. 3 acts: 1 (the paper: at the connection's middle) | 3 | 5 (along the connection, where the moment changes; docs/model-stems.md)")
         ("stem.tau_s", po::value(&bend.tau)->default_value(bend.tau, text(bend.tau)), "tau (Eqs. 7-8)")
         ("stem.bending_reading", po::value(&reading)->default_value(reading), "isotropic (moment vector) | per_axis (the paper's x and y laws)")
         ("stem.root_stiffness_nm_rad", po::value(&stem.root.stiffness)->default_value(stem.root.stiffness, text(stem.root.stiffness)), "K_Root (Eqs. 9-10)")

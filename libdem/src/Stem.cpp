@@ -83,9 +83,9 @@ Stem::Stem(const StemGeometry& g, const StemParams& p, const Vec3& foot, StemFoo
         const double dCon = 0.5 * (da + db);  // mean diameter between the nodes
         const double area = kPi * dCon * dCon / 4;
         const double polar = kPi * std::pow(dCon, 4) / 32;
-        connections_.push_back(Connection{dCon, p.bending.moe * area / length_, shearModulus * area / length_,
-                                          shearModulus * polar / length_,
-                                          BendingLaw(bendingCoefficients(p.bending, dCon, length_), p.bending.reading)});
+        connections_.push_back(Connection{dCon, p.bending.moe * area / length_, shearModulus * polar / length_,
+                                          ConnectionBeam(p.bending, da, db, shearModulus * area / length_, length_,
+                                                         p.bending.sections)});
     }
 
     // Crown: m_C spread equally over the nodes within L_C of the top (the top node at least).
@@ -125,21 +125,11 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         const Vec3 chord = position[b] - position[a];
         const Vec3 stretch = frame.conjugate() * chord - Vec3(0, 0, length_ + k.weightCompression);  // shear x, y; axial z
 
-        const Vec2 bend = theta.head<2>();
-        // The moment changes along the connection by chord x f_shear (the connection's statics), so
-        // one end carries half of that change more than the middle: yield and rupture happen there
-        // (our correction to Eqs. 2-6, derived and measured in docs/model-stems.md).
-        Vec2 offset = Vec2::Zero();
-        if (params_.bending.criticalSection) {
-            const Vec2 change = 0.5 * length_ * k.shear * Vec2(-stretch.y(), stretch.x());
-            offset = k.bending.moment().dot(change) >= 0 ? change : Vec2(-change);
-        }
-        const HingeWork w = theta.norm() > kFoldedConnection ? k.bending.snap() : k.bending.rotate(bend - k.bendingAngle, offset);
-        k.bendingAngle = bend;
+        const HingeWork w = theta.norm() > kFoldedConnection ? k.bending.snap()
+                                                             : k.bending.deform(theta.head<2>(), stretch.head<2>());
         ledger.bendingPlasticity += w.dissipated;
         ledger.unloadingGain += w.created;
-        const double linear = 0.5 * (k.shear * stretch.head<2>().squaredNorm() + k.axial * stretch.z() * stretch.z() +
-                                     k.twist * theta.z() * theta.z());
+        const double linear = 0.5 * (k.axial * stretch.z() * stretch.z() + k.twist * theta.z() * theta.z());
         if (k.bending.broken()) {
             ledger.rupture += w.released + linear;  // M_Rupt reached: resistance lost along all axes
             continue;
@@ -159,7 +149,8 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         // The axial and shear springs pull the nodes apart along the chord (f on a, -f on b) and,
         // through their frame halfway between a and b, turn it: chord x f in all, shared by the nodes as
         // the frame follows them (exactly half each for small theta).
-        const Vec3 f = frame * Vec3(k.shear * stretch.x(), k.shear * stretch.y(), k.axial * stretch.z());
+        const Vec2 shear = k.bending.shearForce();
+        const Vec3 f = frame * Vec3(shear.x(), shear.y(), k.axial * stretch.z());
         const Eigen::Matrix3d frameFromB = 0.5 * frame.toRotationMatrix() * rightJacobian(0.5 * theta) * toTheta * ra.transpose();
         const Vec3 turn = chord.cross(f);
         const Vec3 onB = frameFromB.transpose() * turn;
@@ -207,7 +198,8 @@ double Stem::stableTimeStep() const {
             const std::size_t j = (c == i) ? i + 1 : i - 1;
             const HingeCoefficients& h = k.bending.coefficients();
             s.add(k.axial, 0, row(invMass(i), invMass(j)));
-            s.add(k.shear, 0, row(invShear(i), invShear(j)));
+            // The shear spring bounds the connection's transverse stiffness (ConnectionBeam: in series with bending).
+            s.add(k.bending.shearStiffness(), 0, row(invShear(i), invShear(j)));
             s.add(h.elastic, h.viscosity, row(invInertia(i), invInertia(j)));  // K_Elast: the stiffest branch
             s.add(k.twist, 0, row(invInertia(i), invInertia(j)));
         }

@@ -65,6 +65,7 @@ std::vector<double> beamDeflection(double dbh, double tip, double length, const 
 
 struct Relaxed {
     std::vector<double> heights, deflection;
+    std::vector<Vec2> footEnd, topEnd;  // each connection's moment at its two end sections
     double plasticWork = 0, speed = 0;
 };
 
@@ -86,6 +87,11 @@ Relaxed relax(const StemGeometry& g, const StemParams& p, StemFoot foot, double 
         r.heights.push_back(stem.restHeight(i));
         r.deflection.push_back(stem.position[i].x());
         r.speed = std::max(r.speed, stem.velocity[i].norm());
+    }
+    for (std::size_t c = 0; c < stem.connectionCount(); ++c) {
+        const ConnectionBeam& b = stem.bending(c);
+        r.footEnd.push_back(b.sectionMoment(0));
+        r.topEnd.push_back(b.sectionMoment(b.sectionCount() - 1));
     }
     r.plasticWork = stem.ledger.bendingPlasticity + stem.ledger.rootPlasticity;
     return r;
@@ -138,4 +144,31 @@ TEST(StemStatics, RootSpringAddsTheRigidRotationOfTheFoot) {
     // Same discretisation and bound as the finest clamped case: the foot's rotation adds no error.
     EXPECT_LT(relativeGap(r, expected), 1e-3);
     std::printf("  root spring: tip %.6f m, expected %.6f m\n", r.deflection.back(), expected.back());
+}
+
+// With sections along each connection (ConnectionBeam), the end sections carry the cantilever's
+// moment P (L - z) at their own heights, the statics a connection's middle alone cannot show; and
+// the deflection is the beam's to the relaxation's floor already at 0.5 m: the sections integrate
+// the cone's flexibility with Simpson's rule, where one hinge per connection is the midpoint rule
+// (6.5e-4 of the tip deflection at 0.5 m, the test above).
+TEST(StemStatics, SectionsCarryTheCantileverMomentAtTheirHeights) {
+    const StemGeometry g = beechStem(20);
+    StemParams p = params(0.5);
+    p.bending.sections = 3;
+    const double load = 2;
+    const Relaxed r = relax(g, p, StemFoot::Clamped, load);
+    ASSERT_EQ(r.plasticWork, 0.0);
+    ASSERT_LT(r.speed / kOmega1, 1e-5 * r.deflection.back());
+    const double l = r.heights[1];
+    for (std::size_t c = 0; c < r.footEnd.size(); ++c) {
+        // Bending towards +x turns the stem about +y. The moment arm changes with the deflection by
+        // ~w^2 / L ~ 1e-5 m: 1e-4 of P L bounds it and the relaxation's residue (~5e-7).
+        EXPECT_NEAR(r.footEnd[c].y(), load * (g.height - c * l), 1e-4 * load * g.height) << "connection " << c;
+        EXPECT_NEAR(r.topEnd[c].y(), load * (g.height - (c + 1) * l), 1e-4 * load * g.height) << "connection " << c;
+        EXPECT_NEAR(r.footEnd[c].x(), 0, 1e-4 * load * g.height);
+    }
+    const std::vector<double> beam = beamDeflection(g.dbh, p.tipDiameter, g.height, p, load, r.heights);
+    const double gap = relativeGap(r, beam);
+    std::printf("  3 sections at 0.5 m: largest gap %.3e of the tip deflection\n", gap);
+    EXPECT_LT(gap, 1e-4);
 }

@@ -36,9 +36,7 @@ public:
 
     // Follows an increment of the relative rotation about x and y of the connection frame (rad).
     // Reaching M_Rupt breaks the hinge: the moment drops to zero for good.
-    // `offset` is how much the moment of the connection's critical section exceeds the connection's
-    // own moment (the moment varies along the connection): yield and rupture are decided there.
-    HingeWork rotate(const Vec2& dTheta, const Vec2& offset = Vec2::Zero());
+    HingeWork rotate(const Vec2& dTheta);
 
     // Breaks the hinge now, whatever its moment (Stem: a connection folded beyond what any wood
     // fibre survives); its stored energy is released.
@@ -57,7 +55,7 @@ private:
         bool yielded = false;
     };
     using Moment = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 2, 1>;
-    HingeWork advance(Moment& m, const Moment& d, const Moment& offset, Channel& ch);
+    HingeWork advance(Moment& m, const Moment& d, Channel& ch);
     double stiffness(const Channel& ch) const { return ch.yielded ? k_.unloading : k_.elastic; }
 
     HingeCoefficients k_;

@@ -3,14 +3,15 @@
 // Geometry: a truncated cone through the DBH at 1.3 m, tapering linearly to StemParams::tipDiameter
 // at H_T. Each cone segment's mass goes half to each of its nodes; the crown mass m_C is spread
 // equally over the nodes within L_C of the top. Between neighbouring nodes a connection of length l
-// and mean diameter D_con carries linear elastic axial, shear and twist springs (MOE and
-// G = MOE / (2 (1 + nu))) and the trilinear bending law. The foot is clamped (coppice stems) or held
+// and mean diameter D_con carries linear elastic axial and twist springs (MOE and
+// G = MOE / (2 (1 + nu))) and, for bending and shear, a ConnectionBeam (the trilinear law of Fig. 3
+// on its sections). The foot is clamped (coppice stems) or held
 // in place and turning on the root spring (single trees). A broken connection transmits nothing:
 // the part above keeps moving as a free chain.
 // Node state is kept as arrays over nodes so that a step is a few loops over contiguous memory.
 #include <vector>
 
-#include "libdem/BendingLaw.hpp"
+#include "libdem/ConnectionBeam.hpp"
 #include "libdem/RigidBody.hpp"
 #include "libdem/RootSpring.hpp"
 #include "libdem/StemLedger.hpp"
@@ -58,7 +59,7 @@ public:
     double diameterAt(double heightAboveFoot) const;
     double connectionLength() const { return length_; }  // l
     double connectionDiameter(std::size_t c) const { return connections_[c].diameter; }  // D_con, between nodes c and c+1
-    const BendingLaw& bending(std::size_t c) const { return connections_[c].bending; }
+    const ConnectionBeam& bending(std::size_t c) const { return connections_[c].bending; }
     bool broken(std::size_t c) const { return connections_[c].bending.broken(); }
     const RootSpring& root() const { return root_; }
 
@@ -81,10 +82,9 @@ public:
 private:
     struct Connection {
         double diameter;  // D_con
-        double axial, shear, twist;  // N/m, N/m, N m/rad
-        BendingLaw bending;
+        double axial, twist;  // N/m, N m/rad
+        ConnectionBeam bending;  // bending and shear
         double weightCompression = 0;  // m: how much the weight above shortens the axial spring (carryOwnWeight)
-        Vec2 bendingAngle = Vec2::Zero();  // relative rotation about x, y at the last update
     };
     StemGeometry geometry_;
     StemParams params_;

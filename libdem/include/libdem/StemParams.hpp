@@ -16,10 +16,9 @@ struct BendingParams {
     double sigmaElast = 37e6;    // sigma_Elast, Pa (Eq. 5)
     double sigmaRupt = 94e6;     // sigma_Rupt, Pa (Eq. 6)
     double tau = 5e-4;           // tau, s (Eqs. 7-8)
-    // Yield and rupture decided at the connection's more loaded end, where the moment is the
-    // connection's own plus half the change its shear force makes over it (docs/model-stems.md);
-    // false: at the connection's own moment, as the paper's Fig. 3 reads.
-    bool criticalSection = false;
+    // Sections along each connection where Fig. 3 is applied (ConnectionBeam): 1 is the paper's
+    // hinge at the connection's middle; 3 and 5 follow the moment's change along the connection.
+    int sections = 1;
     BendingReading reading = BendingReading::Isotropic;
 };
 

@@ -131,10 +131,13 @@ void ForestMotion::detect(const RigidBody& block, const std::vector<Vec3>& centr
             AwakeStem* a = awake(touch.tree);
             a->lastBlockContact = t;
             if (!openImpactOf_.count(touch.tree)) openImpact(block, touch, t);
-            impacts_[openImpactOf_.at(touch.tree)].inContact = true;
+            OpenImpact& i = impacts_[openImpactOf_.at(touch.tree)];
+            // A piece broken off the stem that falls on the block once it has left the tree is
+            // debris, not the impact: only the standing stem (piece 0) starts a new contact.
+            if (i.wasInContact || touch.piece == 0) i.inContact = true;
         }
     // The block's state when its contact with a stem ends is the impact's "after" (a later contact
-    // with the same stem, before it sleeps, moves it on).
+    // with the standing stem, before it sleeps, moves it on).
     for (auto& [tree, index] : openImpactOf_) {
         OpenImpact& i = impacts_[index];
         if (i.inContact || !i.wasInContact) continue;

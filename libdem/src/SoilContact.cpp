@@ -35,9 +35,12 @@ Vec3 SoilContact::force(const ContactGeometry& g, ContactHistory& h, double dt, 
     // rebound it may pull; this is the law whose restitution is exactly Eq. 15's e_n. With
     // dashpotPulls = false the normal force is floored at zero, as Yade's viscoelastic law does
     // (docs/model.md compares the two readings).
-    const double damping = alpha_ * overlapRate;
-    const double fn = dashpotPulls_ ? kn_ * g.overlap + damping : std::max(0.0, kn_ * g.overlap + damping);
-    // Work of the dashpot over the last step: mean force (trapezoid) times the overlap increment.
+    const double spring = kn_ * g.overlap;
+    const double fn = dashpotPulls_ ? spring + alpha_ * overlapRate : std::max(0.0, spring + alpha_ * overlapRate);
+    // Work of the dashpot over the last step: mean force (trapezoid) times the overlap increment. Its
+    // force is what the contact applies beyond the spring: once the floor clips it, only -K_n U_n of
+    // it acts, and booking alpha U_n' would count dissipation that never happened (issue 17).
+    const double damping = fn - spring;
     ledger.contactDamping += 0.5 * (h.dampingForce + damping) * overlapRate * dt;
     h.dampingForce = damping;
     const Vec3 ft = updateShearForce(g, h, kt_, fn, tanPhi_, dt, ledger);  // Eqs. 17-19

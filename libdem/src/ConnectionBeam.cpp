@@ -163,7 +163,9 @@ HingeWork ConnectionBeam::deformChannel(Channel& ch, const Moment& theta, const 
             }
         }
         if (violated < 0) break;
-        active[violated] = ch.section[violated].yielded = true;  // loaded past yield by the others' flow
+        // Loaded past yield by the others' flow: it flows too. Its stiffness drops to K_Unld at the next
+        // increment that loads it further (changing it here would move the forces without work).
+        active[violated] = true;
     }
 
     for (int i = 0; i < n; ++i) {

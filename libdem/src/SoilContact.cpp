@@ -37,11 +37,14 @@ Vec3 SoilContact::force(const ContactGeometry& g, ContactHistory& h, double dt, 
     // (docs/model.md compares the two readings).
     const double spring = kn_ * g.overlap;
     const double fn = dashpotPulls_ ? spring + alpha_ * overlapRate : std::max(0.0, spring + alpha_ * overlapRate);
-    // Work of the dashpot over the last step: mean force (trapezoid) times the overlap increment. Its
-    // force is what the contact applies beyond the spring: once the floor clips it, only -K_n U_n of
-    // it acts, and booking alpha U_n' would count dissipation that never happened (issue 17).
-    const double damping = fn - spring;
-    ledger.contactDamping += 0.5 * (h.dampingForce + damping) * overlapRate * dt;
+    // Work of the dashpot over the last step: the mean of the forces applied before and after it
+    // (trapezoid, as the leapfrog applies them; each along its own normal, which turns as the block
+    // slides over the soil sphere: one shared normal would book a first-order error) times the
+    // contact point's displacement. Its force is what the contact applies beyond the spring: once the
+    // floor clips it, only -K_n U_n of it acts, and booking alpha U_n' would count dissipation that
+    // never happened (issue 17).
+    const Vec3 damping = (fn - spring) * g.normal;
+    ledger.contactDamping -= 0.5 * (h.dampingForce + damping).dot(g.relativeVelocity) * dt;
     h.dampingForce = damping;
     const Vec3 ft = updateShearForce(g, h, kt_, fn, tanPhi_, dt, ledger);  // Eqs. 17-19
     return fn * g.normal + ft;

@@ -19,7 +19,7 @@ struct ContactGeometry {
 struct ContactHistory {
     Vec3 shearForce = Vec3::Zero();  // tangential force on A, world frame
     Vec3 normal = Vec3::Zero();      // normal at the previous step (zero: new contact)
-    double dampingForce = 0;         // normal dashpot force at the previous step, for the energy audit
+    Vec3 dampingForce = Vec3::Zero();  // dashpot force applied at the previous step, for the energy audit
     // Overlap already there when the contact was first seen (a stem woken into a bent neighbour):
     // the spring starts from it instead of releasing energy no motion stored.
     double overlapOffset = 0;

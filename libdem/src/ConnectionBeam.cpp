@@ -131,7 +131,8 @@ HingeWork ConnectionBeam::deformChannel(Channel& ch, const Moment& theta, const 
         for (int i = 0; i < n; ++i)
             if (active[i]) idx[a++] = i;
         Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxSections, kMaxSections> J(a, a);
-        Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxSections, 1> rhs(a);
+        using Column = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxSections, 1>;
+        Column rhs(a);
         for (int p = 0; p < a; ++p) {
             const int i = idx[p];
             rhs[p] = normal[i].dot(trial[i]) - ch.section[i].yieldMoment;
@@ -140,7 +141,7 @@ HingeWork ConnectionBeam::deformChannel(Channel& ch, const Moment& theta, const 
                 J(p, q) = influence(i, j) * normal[i].dot(normal[j]) + (i == j ? hardening_[i] : 0);
             }
         }
-        const auto solution = J.partialPivLu().solve(rhs);
+        const Column solution = J.partialPivLu().solve(rhs);  // evaluated now: the LU is a temporary
         lambda.fill(0);
         int worst = -1;
         for (int p = 0; p < a; ++p) {

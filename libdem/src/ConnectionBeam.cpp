@@ -70,14 +70,14 @@ void ConnectionBeam::solveForces(Channel& ch, const Moment& theta, const Moment&
         a -= r.weight[i] * ch.section[i].plastic;
         b -= r.weight[i] * r.xi[i] * ch.section[i].plastic;
     }
-    const Flexibility f = flexibility(ch);
+    const Flexibility f = ch.flexibility = flexibility(ch);
     const double det = f.mm * f.cc - f.mc * f.mc;
     ch.mean = (f.cc * a - f.mc * b) / det;
     ch.change = (f.mm * b - f.mc * a) / det;
 }
 
 double ConnectionBeam::channelEnergy(const Channel& ch) const {
-    const Flexibility f = flexibility(ch);
+    const Flexibility& f = ch.flexibility;
     return 0.5 * (f.mm * ch.mean.squaredNorm() + 2 * f.mc * ch.mean.dot(ch.change) + f.cc * ch.change.squaredNorm());
 }
 
@@ -118,7 +118,7 @@ HingeWork ConnectionBeam::deformChannel(Channel& ch, const Moment& theta, const 
     }
     if (!any) return w;
 
-    const Flexibility f = flexibility(ch);
+    const Flexibility f = ch.flexibility;
     const double det = f.mm * f.cc - f.mc * f.mc;
     const double g11 = f.cc / det, g12 = -f.mc / det, g22 = f.mm / det;  // the element's stiffness
     // How much a unit flow at section j lowers the moment at section i.

@@ -59,12 +59,13 @@ private:
         bool yielded = false;
     };
     // One set of sections: all of them for the moment vector (isotropic), or one per axis.
+    struct Flexibility {
+        double mm, mc, cc;  // rad per N m: theta = mm M + mc dM + ..., eps = mc M + cc dM + ...
+    };
     struct Channel {
         std::array<Section, kMaxSections> section;
         Moment mean, change;  // M and dM
-    };
-    struct Flexibility {
-        double mm, mc, cc;  // rad per N m: theta = mm M + mc dM + ..., eps = mc M + cc dM + ...
+        Flexibility flexibility;  // at the last solveForces
     };
     HingeWork deformChannel(Channel& ch, const Moment& theta, const Moment& eps);
     Flexibility flexibility(const Channel& ch) const;

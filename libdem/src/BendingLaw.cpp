@@ -96,10 +96,6 @@ HingeWork BendingLaw::snap() {
     return w;
 }
 
-Vec2 BendingLaw::dampingMoment(const Vec2& relativeRate) const {
-    return broken_ ? Vec2::Zero() : Vec2(k_.viscosity * relativeRate);  // Eqs. 7-8
-}
-
 double BendingLaw::storedEnergy() const {
     if (reading_ == BendingReading::Isotropic) return 0.5 * moment_.squaredNorm() / stiffness(channels_[0]);
     return 0.5 * (moment_[0] * moment_[0] / stiffness(channels_[0]) + moment_[1] * moment_[1] / stiffness(channels_[1]));

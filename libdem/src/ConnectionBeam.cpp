@@ -33,12 +33,12 @@ const ConnectionBeam::Rule kRules[] = {
 ConnectionBeam::ConnectionBeam(const BendingParams& p, double diameterA, double diameterB, double shearStiffness,
                                double length, int sections)
     : k_(bendingCoefficients(p, 0.5 * (diameterA + diameterB), length)), shearStiffness_(shearStiffness),
-      length_(length), rule_(nullptr), sections_(sections), reading_(p.reading) {
+      length_(length), rule_(nullptr), reading_(p.reading) {
     for (const Rule& r : kRules)
         if (r.count == sections) rule_ = &r;
     if (!rule_) throw std::invalid_argument("ConnectionBeam: " + std::to_string(sections) + " sections (1, 3 or 5)");
     const int dim = reading_ == BendingReading::Isotropic ? 2 : 1;
-    for (int i = 0; i < sections_; ++i) {
+    for (int i = 0; i < rule_->count; ++i) {
         const double d = diameterA + (diameterB - diameterA) * 0.5 * (rule_->xi[i] + 1);
         const HingeCoefficients& k = sectionK_[i] = bendingCoefficients(p, d, length);
         // Along the plastic branch dtheta = dM / K_Unld + d(plastic) and dM = K_Plast dtheta (Eqs. 3-4).
@@ -228,6 +228,8 @@ HingeWork ConnectionBeam::snap() {
     change_.setZero();
     return w;
 }
+
+int ConnectionBeam::sectionCount() const { return rule_->count; }
 
 Vec2 ConnectionBeam::sectionMoment(int section) const { return moment_ + rule_->xi[section] * change_; }
 

@@ -97,7 +97,6 @@ TEST(BendingLaw, LoadingPlasticUnloadingReloadingAndRuptureFollowTheTrilinearPat
         EXPECT_EQ(law.moment().norm(), 0.0);
         law.rotate(Vec2(-0.05, 0.02));
         EXPECT_EQ(law.moment().norm(), 0.0);
-        EXPECT_EQ(law.dampingMoment(Vec2(3, 4)).norm(), 0.0);
     }
 }
 
@@ -196,13 +195,4 @@ TEST(BendingLaw, ReversedBendingYieldsAtTheLargestMomentReached) {
     EXPECT_NEAR(law.moment().x(), -mMax, kRel * k.ruptureMoment);
     law.rotate(Vec2(-1e-3, 0));
     EXPECT_NEAR(law.moment().x(), -mMax - k.plastic * 1e-3, kRel * k.ruptureMoment);
-}
-
-TEST(BendingLaw, ViscousMomentIsTauKElastTimesTheRelativeRate) {
-    const HingeCoefficients k = beechHinge();
-    const BendingLaw law(k, BendingReading::Isotropic);
-    const Vec2 rate(0.7, -2.0);  // rad/s
-    const Vec2 m = law.dampingMoment(rate);
-    EXPECT_NEAR(m.x(), 5e-4 * k.elastic * 0.7, 1e-12 * k.elastic);   // Eq. 7
-    EXPECT_NEAR(m.y(), -5e-4 * k.elastic * 2.0, 1e-12 * k.elastic);  // Eq. 8
 }

@@ -143,7 +143,7 @@ double obliqueBudgetGap(bool dashpotPulls, double dt) {
 
 // The dashpot's work is booked with each step's force along its own normal: with one normal for both
 // ends of a step the cube's oblique impact lost 1.5e-4 of its energy unbooked at 4e-5 s, first order in
-// the step (2e-4 s, the no-forest scene's step, makes it 7e-4 per impact, 5-7 % over a run). With the
+// the step (at the no-forest scene's median step, 1.7e-3 s, ~6e-3 per impact; 5-7 % over a run). With the
 // dashpot floored the gap must now be ten times below that and still shrink with the step (the
 // leapfrog's second-order onset and exit terms remain). The pulling dashpot's gap (4e-5 at 4e-5 s) is
 // the work of its pull over the step in which a contact opens, which no step books yet.

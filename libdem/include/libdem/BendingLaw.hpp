@@ -1,6 +1,7 @@
 #pragma once
 // The bending hinge of one stem connection: the trilinear elastic-plastic law of Fig. 3 with
-// unloading, reloading and rupture (Eqs. 2-6), and the viscous moment of Eqs. 7-8.
+// unloading, reloading and rupture (Eqs. 2-6); its coefficients include the viscosity of Eqs. 7-8,
+// which ConnectionBeam applies.
 // The law is incremental: it is fed the increments of the relative rotation of the two nodes.
 #include <Eigen/Core>
 
@@ -42,7 +43,6 @@ public:
     // fibre survives); its stored energy is released.
     HingeWork snap();
     const Vec2& moment() const { return moment_; }  // elastic-plastic moment, N m
-    Vec2 dampingMoment(const Vec2& relativeRate) const;  // Eqs. 7-8, N m; zero once broken
     bool broken() const { return broken_; }
     double storedEnergy() const;  // recoverable by elastic unloading, J
     const HingeCoefficients& coefficients() const { return k_; }

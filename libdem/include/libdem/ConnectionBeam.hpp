@@ -46,7 +46,7 @@ public:
     double storedEnergy() const { return stored_; }  // bending and shear, recoverable elastically, J
     const HingeCoefficients& coefficients() const { return k_; }  // of the whole connection at D_con
     double shearStiffness() const { return shearStiffness_; }
-    int sectionCount() const { return sections_; }
+    int sectionCount() const;
     BendingReading reading() const { return reading_; }
 
     struct Rule;  // where the sections sit and what they weigh (ConnectionBeam.cpp)
@@ -58,10 +58,10 @@ private:
         double yieldMoment;  // radius of the elastic domain: M_Elast, then the largest moment reached
         bool yielded = false;
     };
-    // One set of sections: all of them for the moment vector (isotropic), or one per axis.
     struct Flexibility {
         double mm, mc, cc;  // rad per N m: theta = mm M + mc dM + ..., eps = mc M + cc dM + ...
     };
+    // One set of sections: all of them for the moment vector (isotropic), or one per axis.
     struct Channel {
         std::array<Section, kMaxSections> section;
         Moment mean, change;  // M and dM
@@ -76,7 +76,6 @@ private:
     HingeCoefficients k_;
     double shearStiffness_, length_;
     const Rule* rule_;
-    int sections_;
     BendingReading reading_;
     std::array<HingeCoefficients, kMaxSections> sectionK_;
     std::array<double, kMaxSections> hardening_;  // dM / d(plastic rotation) along the plastic branch, N m/rad

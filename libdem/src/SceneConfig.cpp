@@ -1,8 +1,10 @@
 #include "libdem/SceneConfig.hpp"
 
 #include <boost/program_options.hpp>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "libstand/InputError.hpp"
@@ -20,10 +22,83 @@ std::string text(const T& v) {
     return os.str();
 }
 
-// One table of keys: name, target, default, meaning. The INI sections are the part before the dot.
-po::options_description sceneKeys(SceneConfig& c, std::string& shape, std::string& orientation, double& restitution,
-                                  std::string& reading) {
-    po::options_description d("Scene keys ([section] key = value, or --set section.key=value)");
+// The physical range of a numeric key. A value outside it is refused where it is read, before
+// anything is built from it, with the key, the value, the range and the likely cause.
+struct Range {
+    double lo, hi;
+    bool loOpen, hiOpen;
+    const char* unit;
+    const char* tooLow = "";   // likely cause of a value below the range
+    const char* tooHigh = "";  // ... above it
+};
+Range closed(double lo, double hi, const char* unit, const char* tooLow = "", const char* tooHigh = "") {
+    return {lo, hi, false, false, unit, tooLow, tooHigh};
+}
+Range aboveUpTo(double lo, double hi, const char* unit, const char* tooLow = "", const char* tooHigh = "") {
+    return {lo, hi, true, false, unit, tooLow, tooHigh};  // (lo, hi]
+}
+Range fromBelow(double lo, double hi, const char* unit) { return {lo, hi, false, true, unit}; }  // [lo, hi)
+
+std::string describe(const Range& r) {
+    std::string s = std::string(r.loOpen ? "(" : "[") + text(r.lo) + ", " + text(r.hi) + (r.hiOpen ? ")" : "]");
+    return *r.unit ? s + " " + r.unit : s;
+}
+
+bool inside(const Range& r, double v) {
+    return std::isfinite(v) && (r.loOpen ? v > r.lo : v >= r.lo) && (r.hiOpen ? v < r.hi : v <= r.hi);
+}
+
+struct NumericKey {
+    std::string name;
+    const double* value;
+    Range range;
+};
+
+// One table of keys: name, target, default, meaning, and for numbers their range (shown in
+// --help-scene). The INI sections are the part before the dot.
+class KeyTable {
+public:
+    KeyTable() : keys_("Scene keys ([section] key = value, or --set section.key=value); [range] of each number") {}
+
+    void number(const char* key, double& v, const Range& r, const std::string& meaning) {
+        keys_.add_options()(key, po::value(&v)->default_value(v, text(v)), (meaning + " " + describe(r)).c_str());
+        numbers_.push_back({key, &v, r});
+    }
+    // A number without a default: absent means "not used" (a cuboid's edges, a launch speed).
+    void optionalNumber(const char* key, double& v, const Range& r, const std::string& meaning) {
+        keys_.add_options()(key, po::value(&v), (meaning + " " + describe(r)).c_str());
+        numbers_.push_back({key, &v, r});
+    }
+    template <class T>
+    void other(const char* key, T& v, const char* meaning) {
+        keys_.add_options()(key, po::value(&v)->default_value(v, text(v)), meaning);
+    }
+    template <class T>
+    void optionalOther(const char* key, T& v, const char* meaning) {
+        keys_.add_options()(key, po::value(&v), meaning);
+    }
+    const po::options_description& keys() const { return keys_; }
+    const std::vector<NumericKey>& numbers() const { return numbers_; }
+
+private:
+    po::options_description keys_;
+    std::vector<NumericKey> numbers_;
+};
+
+// The scene's keys bound to one configuration, with the keys read as text or in other units.
+struct SceneKeys {
+    SceneConfig c;
+    std::string shape = "cube", orientation = "random", reading = "isotropic";
+    double restitution = -1;
+    KeyTable table;
+
+    SceneKeys();
+    SceneKeys(const SceneKeys&) = delete;  // the table points into this object
+    SceneKeys& operator=(const SceneKeys&) = delete;
+};
+
+SceneKeys::SceneKeys() {
+    KeyTable& k = table;
     auto& t = c.terrain;
     auto& s = c.soilContact;
     auto& b = c.block;
@@ -34,77 +109,119 @@ po::options_description sceneKeys(SceneConfig& c, std::string& shape, std::strin
     auto& bend = c.stem.bending;
     auto& tc = c.stemContact;
     auto& act = c.activity;
-    d.add_options()
-        ("terrain.profile", po::value(&t.profile), "slope profile CSV with columns x,z (m), relative to the scene file")
-        ("terrain.dtm", po::value(&t.dtm), "or a DTM as an ESRI ASCII grid (.asc)")
-        ("forest.file", po::value(&c.forestFile), "forest CSV (from sylvarock generate, or x,y,dbh_cm[,stool]); relative to the scene file")
-        ("terrain.width_m", po::value(&t.soil.width)->default_value(t.soil.width, text(t.soil.width)), "extent across the slope of a profile terrain, m")
-        ("terrain.soil_radius_m", po::value(&t.soil.radius)->default_value(t.soil.radius, text(t.soil.radius)), "R_soil, m (Table 2: 0.7)")
-        ("terrain.roughness_m", po::value(&t.soil.roughness)->default_value(t.soil.roughness, text(t.soil.roughness)), "bump height between soil spheres, m (Table 2: 0.1)")
-        ("terrain.seed", po::value(&t.soil.seed)->default_value(t.soil.seed, text(t.soil.seed)), "seed of the rows' offsets across the slope (Fig. 7)")
-        ("soil.kn_n_m", po::value(&s.kn)->default_value(s.kn, text(s.kn)), "K_n^soil, N/m (Table 2)")
-        ("soil.kappa", po::value(&s.kappa)->default_value(s.kappa, text(s.kappa)), "K_t/K_n (Eq. 19)")
-        ("soil.damping_ratio", po::value(&s.dampingRatio)->default_value(s.dampingRatio, text(s.dampingRatio)), "alpha/alpha_cr (Eq. 15)")
-        ("soil.restitution", po::value(&restitution), "e_n instead of damping_ratio (Eq. 15)")
-        ("soil.dashpot_pulls", po::value(&s.dashpotPulls)->default_value(s.dashpotPulls, text(s.dashpotPulls)), "Eq. 14 as written (true: the dashpot may pull at the end of a rebound) or floored at zero (false, as Yade)")
-        ("soil.friction_deg", po::value(&s.frictionDeg)->default_value(s.frictionDeg, text(s.frictionDeg)), "phi^soil, degrees")
-        ("block.shape", po::value(&shape)->default_value(shape, text(shape)), "cube | cuboid | sphere")
-        ("block.volume_m3", po::value(&b.volumeM3)->default_value(b.volumeM3, text(b.volumeM3)), "volume of a cube or sphere block, m^3")
-        ("block.d1_m", po::value(&b.d1), "cuboid edge 1, m")
-        ("block.d2_m", po::value(&b.d2), "cuboid edge 2, m")
-        ("block.d3_m", po::value(&b.d3), "cuboid edge 3, m")
-        ("block.density_kg_m3", po::value(&b.densityKgM3)->default_value(b.densityKgM3, text(b.densityKgM3)), "kg/m^3 (Table 2: 2700)")
-        ("release.x_m", po::value(&r.x)->default_value(r.x, text(r.x)), "release x, m")
-        ("release.y_m", po::value(&r.y)->default_value(r.y, text(r.y)), "release y, m (runs without forest)")
-        ("release.y_min_m", po::value(&r.yMin), "release y drawn uniformly in [y_min_m, y_max_m]")
-        ("release.y_max_m", po::value(&r.yMax), "")
-        ("release.forest_y_min_m", po::value(&r.forestYMin)->default_value(r.forestYMin, text(r.forestYMin)), "with a forest and no y range: y uniform in [forest_y_min_m, forest_y_max_m] (Sect. 2.3.2)")
-        ("release.forest_y_max_m", po::value(&r.forestYMax)->default_value(r.forestYMax, text(r.forestYMax)), "")
-        ("release.fall_height_m", po::value(&r.fallHeight)->default_value(r.fallHeight, text(r.fallHeight)), "block centre above the surface, m")
-        ("release.orientation", po::value(&orientation)->default_value(orientation, text(orientation)), "random (angles in [0,180) deg about x,y,z) | fixed")
-        ("block.speed_m_s", po::value(&c.launch.speed), "single-tree scenes: launch the block at this speed toward the tree (+x)")
-        ("block.impact_height_m", po::value(&c.launch.impactHeight)->default_value(c.launch.impactHeight, text(c.launch.impactHeight)), "... its centre this high above the stem's foot")
-        ("block.eccentricity", po::value(&c.launch.eccentricity)->default_value(c.launch.eccentricity, text(c.launch.eccentricity)), "... offset across its path by this fraction of (block radius + stem radius), in [-1, 1]")
-        ("block.launch_distance_m", po::value(&c.launch.distance)->default_value(c.launch.distance, text(c.launch.distance)), "... starting this far before the stem's axis")
-        ("tree.dbh_cm", po::value(&c.tree.dbhCm), "single-tree scenes: one tree of this DBH (replaces forest.file)")
-        ("tree.x_m", po::value(&c.tree.x)->default_value(c.tree.x, text(c.tree.x)), "its position, m")
-        ("tree.y_m", po::value(&c.tree.y)->default_value(c.tree.y, text(c.tree.y)), "")
-        ("tree.coppice", po::value(&c.tree.coppice)->default_value(c.tree.coppice, text(c.tree.coppice)), "a coppice stem (clamped foot) instead of a single tree (root spring)")
-        ("integration.safety", po::value(&i.safety)->default_value(i.safety, text(i.safety)), "time step as a fraction of the stable limit")
-        ("integration.stem_safety", po::value(&i.stemSafety)->default_value(i.stemSafety, text(i.stemSafety)), "time step as a fraction of the awake stems' stable limit")
-        ("integration.dt_s", po::value(&i.forcedDt)->default_value(i.forcedDt, text(i.forcedDt)), "force this time step (0: automatic); refused if unstable")
-        ("integration.anticipated_contacts", po::value(&i.anticipatedContacts)->default_value(i.anticipatedContacts, text(i.anticipatedContacts)), "new contacts the step must stay stable for")
-        ("integration.energy_tolerance", po::value(&i.energyTolerance)->default_value(i.energyTolerance, text(i.energyTolerance)), "relative energy growth that stops a run")
-        ("integration.energy_warning", po::value(&i.energyWarning)->default_value(i.energyWarning, text(i.energyWarning)), "relative energy imbalance above which a run is flagged (runs.csv energy_flag, summary.json energy_flagged_runs)")
-        ("stop.rest_distance_m", po::value(&st.restDistance)->default_value(st.restDistance, text(st.restDistance)), "the block rests once its centre stays within this distance of one point ...")
-        ("stop.rest_time_s", po::value(&st.restTime)->default_value(st.restTime, text(st.restTime)), "... for this long, s")
-        ("stop.max_time_s", po::value(&st.maxTime)->default_value(st.maxTime, text(st.maxTime)), "simulated time limit, s")
-        ("stem.node_spacing_m", po::value(&stem.nodeSpacing)->default_value(stem.nodeSpacing, text(stem.nodeSpacing)), "largest distance between a stem's nodes, m")
-        ("stem.tip_diameter_m", po::value(&stem.tipDiameter)->default_value(stem.tipDiameter, text(stem.tipDiameter)), "diameter of the cone at H_T, m")
-        ("stem.density_kg_m3", po::value(&stem.density)->default_value(stem.density, text(stem.density)), "fresh wood (Table 2: 1.2 t/m^3)")
-        ("stem.poisson", po::value(&stem.poisson)->default_value(stem.poisson, text(stem.poisson)), "nu, for shear and twist (not in the paper)")
-        ("stem.moe_pa", po::value(&bend.moe)->default_value(bend.moe, text(bend.moe)), "MOE (Eq. 2)")
-        ("stem.e_plast_pa", po::value(&bend.ePlast)->default_value(bend.ePlast, text(bend.ePlast)), "E_Plast (Eq. 3)")
-        ("stem.e_unld_pa", po::value(&bend.eUnld)->default_value(bend.eUnld, text(bend.eUnld)), "E_Unld (Eq. 4)")
-        ("stem.sigma_elast_pa", po::value(&bend.sigmaElast)->default_value(bend.sigmaElast, text(bend.sigmaElast)), "sigma_Elast (Eq. 5)")
-        ("stem.sigma_rupt_pa", po::value(&bend.sigmaRupt)->default_value(bend.sigmaRupt, text(bend.sigmaRupt)), "sigma_Rupt (Eq. 6)")
-        ("stem.sections", po::value(&bend.sections)->default_value(bend.sections, text(bend.sections)), "sections per connection where Fig. 3 acts: 1 (the paper: at the connection's middle) | 3 | 5 (along the connection, where the moment changes; docs/model-stems.md)")
-        ("stem.tau_s", po::value(&bend.tau)->default_value(bend.tau, text(bend.tau)), "tau (Eqs. 7-8)")
-        ("stem.bending_reading", po::value(&reading)->default_value(reading), "isotropic (moment vector) | per_axis (the paper's x and y laws)")
-        ("stem.root_stiffness_nm_rad", po::value(&stem.root.stiffness)->default_value(stem.root.stiffness, text(stem.root.stiffness)), "K_Root (Eqs. 9-10)")
-        ("stem.root_yield_moment_nm", po::value(&stem.root.yieldMoment)->default_value(stem.root.yieldMoment, text(stem.root.yieldMoment)), "M_a")
-        ("tree_contact.er_pa", po::value(&tc.woodRadialModulus)->default_value(tc.woodRadialModulus, text(tc.woodRadialModulus)), "E_r (Eqs. 22-23)")
-        ("tree_contact.eb_pa", po::value(&tc.blockModulus)->default_value(tc.blockModulus, text(tc.blockModulus)), "E_b (Eq. 22)")
-        ("tree_contact.kappa_block_stem", po::value(&tc.kappaBlockStem)->default_value(tc.kappaBlockStem, text(tc.kappaBlockStem)), "kappa_b-t")
-        ("tree_contact.friction_block_stem_deg", po::value(&tc.frictionBlockStemDeg)->default_value(tc.frictionBlockStemDeg, text(tc.frictionBlockStemDeg)), "phi_b-t")
-        ("tree_contact.kappa_stem_stem", po::value(&tc.kappaStemStem)->default_value(tc.kappaStemStem, text(tc.kappaStemStem)), "kappa_t-t")
-        ("tree_contact.friction_stem_stem_deg", po::value(&tc.frictionStemStemDeg)->default_value(tc.frictionStemStemDeg, text(tc.frictionStemStemDeg)), "phi_t-t")
-        ("forest.wake_margin_m", po::value(&act.wakeMargin)->default_value(act.wakeMargin, text(act.wakeMargin)), "a stem is built when the block comes this close, m")
-        ("forest.sleep_after_s", po::value(&act.sleepAfter)->default_value(act.sleepAfter, text(act.sleepAfter)), "a stem sleeps after this long without the block, s")
-        ("forest.all_awake", po::value(&act.allAwake)->default_value(act.allAwake, text(act.allAwake)), "reference mode: every stem awake from the start")
-        ("gravity_m_s2", po::value(&c.gravity)->default_value(c.gravity, text(c.gravity)), "")
-        ("output.trajectory_interval_s", po::value(&c.trajectoryInterval)->default_value(c.trajectoryInterval, text(c.trajectoryInterval)), "trajectory sampling, s");
-    return d;
+    // Map coordinates: a projected CRS (UTM northings reach 1e7 m) or the scene's own frame.
+    const Range coordinate = closed(-1e8, 1e8, "m");
+    const Range modulus = closed(1e5, 1e13, "Pa", "MPa or GPa typed as Pa?");
+    const Range ratio = aboveUpTo(0, 10, "");
+    const Range friction = fromBelow(0, 90, "deg");
+    k.optionalOther("terrain.profile", t.profile, "slope profile CSV with columns x,z (m), relative to the scene file");
+    k.optionalOther("terrain.dtm", t.dtm, "or a DTM as an ESRI ASCII grid (.asc)");
+    k.optionalOther("forest.file", c.forestFile, "forest CSV (from sylvarock generate, or x,y,dbh_cm[,stool]); relative to the scene file");
+    k.number("terrain.width_m", t.soil.width, aboveUpTo(0, 5000, "m", "", "the soil bed covers the whole width: a valley-wide strip would not fit in memory"), "extent across the slope of a profile terrain");
+    k.number("terrain.soil_radius_m", t.soil.radius, aboveUpTo(0.01, 10, "m", "", "cm typed as m?"), "R_soil (Table 2: 0.7)");
+    k.number("terrain.roughness_m", t.soil.roughness, closed(0, 10, "m", "", "cm typed as m?"), "bump height between soil spheres (Table 2: 0.1)");
+    k.other("terrain.seed", t.soil.seed, "seed of the rows' offsets across the slope (Fig. 7)");
+    k.number("soil.kn_n_m", s.kn, aboveUpTo(0, 1e12, "N/m"), "K_n^soil (Table 2)");
+    k.number("soil.kappa", s.kappa, ratio, "K_t/K_n (Eq. 19)");
+    k.number("soil.damping_ratio", s.dampingRatio, fromBelow(0, 1, ""), "alpha/alpha_cr (Eq. 15)");
+    k.optionalNumber("soil.restitution", restitution, aboveUpTo(0, 1, ""), "e_n instead of damping_ratio (Eq. 15)");
+    k.other("soil.dashpot_pulls", s.dashpotPulls, "Eq. 14 as written (true: the dashpot may pull at the end of a rebound) or floored at zero (false, as Yade)");
+    k.number("soil.friction_deg", s.frictionDeg, friction, "phi^soil");
+    k.other("block.shape", shape, "cube | cuboid | sphere");
+    k.number("block.volume_m3", b.volumeM3, aboveUpTo(0, 1000, "m^3", "", "litres typed as m^3? (above 1000 m^3 is a rock avalanche, not a rockfall)"), "volume of a cube or sphere block");
+    const Range edge = aboveUpTo(0, 20, "m", "", "mm or cm typed as m?");
+    k.optionalNumber("block.d1_m", b.d1, edge, "cuboid edge 1");
+    k.optionalNumber("block.d2_m", b.d2, edge, "cuboid edge 2");
+    k.optionalNumber("block.d3_m", b.d3, edge, "cuboid edge 3");
+    k.number("block.density_kg_m3", b.densityKgM3, closed(500, 8000, "kg/m^3", "t/m^3 typed as kg/m^3?"), "(Table 2: 2700)");
+    k.number("release.x_m", r.x, coordinate, "release x");
+    k.number("release.y_m", r.y, coordinate, "release y (runs without forest)");
+    k.optionalNumber("release.y_min_m", r.yMin, coordinate, "release y drawn uniformly in [y_min_m, y_max_m]");
+    k.optionalNumber("release.y_max_m", r.yMax, coordinate, "");
+    k.number("release.forest_y_min_m", r.forestYMin, coordinate, "with a forest and no y range: y uniform in [forest_y_min_m, forest_y_max_m] (Sect. 2.3.2)");
+    k.number("release.forest_y_max_m", r.forestYMax, coordinate, "");
+    k.number("release.fall_height_m", r.fallHeight, closed(0, 1000, "m"), "block centre above the surface");
+    k.other("release.orientation", orientation, "random (angles in [0,180) deg about x,y,z) | fixed");
+    k.optionalNumber("block.speed_m_s", c.launch.speed, closed(0, 100, "m/s", "", "km/h typed as m/s? (rockfall rarely exceeds 40 m/s)"), "single-tree scenes: launch the block at this speed toward the tree (+x)");
+    k.number("block.impact_height_m", c.launch.impactHeight, aboveUpTo(0, 30, "m", "", "cm typed as m?"), "... its centre this high above the stem's foot");
+    k.number("block.eccentricity", c.launch.eccentricity, closed(-1, 1, ""), "... offset across its path by this fraction of (block radius + stem radius)");
+    k.number("block.launch_distance_m", c.launch.distance, closed(0, 100, "m"), "... starting this far before the stem's axis");
+    k.optionalNumber("tree.dbh_cm", c.tree.dbhCm, aboveUpTo(0, 300, "cm", "", "DBH typed in mm?"), "single-tree scenes: one tree of this DBH (replaces forest.file)");
+    k.number("tree.x_m", c.tree.x, coordinate, "its position");
+    k.number("tree.y_m", c.tree.y, coordinate, "");
+    k.other("tree.coppice", c.tree.coppice, "a coppice stem (clamped foot) instead of a single tree (root spring)");
+    k.number("integration.safety", i.safety, aboveUpTo(0, 1, ""), "time step as a fraction of the stable limit");
+    k.number("integration.stem_safety", i.stemSafety, aboveUpTo(0, 1, ""), "time step as a fraction of the awake stems' stable limit");
+    k.number("integration.dt_s", i.forcedDt, closed(0, 1, "s"), "force this time step (0: automatic); refused if unstable");
+    k.other("integration.anticipated_contacts", i.anticipatedContacts, "new contacts the step must stay stable for (1 to 1000)");
+    k.number("integration.energy_tolerance", i.energyTolerance, aboveUpTo(0, 100, "(fraction)", "", "a percentage typed as a fraction? 0.5 is 50 %"), "relative energy growth that stops a run");
+    k.number("integration.energy_warning", i.energyWarning, aboveUpTo(0, 100, "(fraction)", "", "a percentage typed as a fraction? 0.05 is 5 %"), "relative energy imbalance above which a run is flagged (runs.csv energy_flag, summary.json energy_flagged_runs)");
+    k.number("stop.rest_distance_m", st.restDistance, aboveUpTo(0, 100, "m"), "the block rests once its centre stays within this distance of one point ...");
+    k.number("stop.rest_time_s", st.restTime, aboveUpTo(0, 3600, "s"), "... for this long");
+    k.number("stop.max_time_s", st.maxTime, aboveUpTo(0, 1e5, "s"), "simulated time limit");
+    k.number("stem.node_spacing_m", stem.nodeSpacing, aboveUpTo(0.005, 5, "m", "mm typed as m?"), "largest distance between a stem's nodes");
+    k.number("stem.tip_diameter_m", stem.tipDiameter, closed(0, 0.5, "m", "", "cm typed as m?"), "diameter of the cone at H_T");
+    k.number("stem.density_kg_m3", stem.density, closed(200, 2000, "kg/m^3", "t/m^3 typed as kg/m^3?"), "fresh wood (Table 2: 1.2 t/m^3)");
+    k.number("stem.poisson", stem.poisson, {-1, 0.5, true, true, ""}, "nu, for shear and twist (not in the paper)");
+    k.number("stem.moe_pa", bend.moe, modulus, "MOE (Eq. 2)");
+    k.number("stem.e_plast_pa", bend.ePlast, closed(0, 1e12, "Pa"), "E_Plast (Eq. 3)");
+    k.number("stem.e_unld_pa", bend.eUnld, modulus, "E_Unld (Eq. 4)");
+    k.number("stem.sigma_elast_pa", bend.sigmaElast, closed(1e4, 1e10, "Pa", "MPa typed as Pa?"), "sigma_Elast (Eq. 5)");
+    k.number("stem.sigma_rupt_pa", bend.sigmaRupt, closed(1e4, 1e10, "Pa", "MPa typed as Pa?"), "sigma_Rupt (Eq. 6)");
+    k.other("stem.sections", bend.sections, "sections per connection where Fig. 3 acts: 1 (the paper: at the connection's middle) | 3 | 5 (along the connection, where the moment changes; docs/model-stems.md)");
+    k.number("stem.tau_s", bend.tau, closed(0, 1, "s", "", "ms typed as s?"), "tau (Eqs. 7-8)");
+    k.other("stem.bending_reading", reading, "isotropic (moment vector) | per_axis (the paper's x and y laws)");
+    k.number("stem.root_stiffness_nm_rad", stem.root.stiffness, aboveUpTo(0, 1e12, "N m/rad"), "K_Root (Eqs. 9-10)");
+    k.number("stem.root_yield_moment_nm", stem.root.yieldMoment, aboveUpTo(0, 1e9, "N m", "", "N mm typed as N m?"), "M_a");
+    k.number("tree_contact.er_pa", tc.woodRadialModulus, modulus, "E_r (Eqs. 22-23)");
+    k.number("tree_contact.eb_pa", tc.blockModulus, modulus, "E_b (Eq. 22)");
+    k.number("tree_contact.kappa_block_stem", tc.kappaBlockStem, ratio, "kappa_b-t");
+    k.number("tree_contact.friction_block_stem_deg", tc.frictionBlockStemDeg, friction, "phi_b-t");
+    k.number("tree_contact.kappa_stem_stem", tc.kappaStemStem, ratio, "kappa_t-t");
+    k.number("tree_contact.friction_stem_stem_deg", tc.frictionStemStemDeg, friction, "phi_t-t");
+    k.number("forest.wake_margin_m", act.wakeMargin, closed(0, 100, "m"), "a stem is built when the block comes this close");
+    k.number("forest.sleep_after_s", act.sleepAfter, aboveUpTo(0, 3600, "s"), "a stem sleeps after this long without the block");
+    k.other("forest.all_awake", act.allAwake, "reference mode: every stem awake from the start");
+    k.number("gravity_m_s2", c.gravity, aboveUpTo(0, 100, "m/s^2"), "");
+    k.number("output.trajectory_interval_s", c.trajectoryInterval, aboveUpTo(0, 3600, "s"), "trajectory sampling");
+}
+
+// Line of `key` ("section.key") in an INI file, 0 if not found: errors point at it.
+long lineOf(const std::string& path, const std::string& key) {
+    const auto dot = key.rfind('.');
+    const std::string section = dot == std::string::npos ? "" : key.substr(0, dot);
+    const std::string name = key.substr(dot == std::string::npos ? 0 : dot + 1);
+    std::ifstream in(path);
+    std::string line, current;
+    for (long n = 1; std::getline(in, line); ++n) {
+        const auto first = line.find_first_not_of(" \t");
+        if (first == std::string::npos) continue;
+        if (line[first] == '[') {
+            const auto close = line.find(']', first);
+            current = line.substr(first + 1, close == std::string::npos ? std::string::npos : close - first - 1);
+        } else if (current == section && line.compare(first, name.size(), name) == 0) {
+            const auto rest = line.find_first_not_of(" \t", first + name.size());
+            if (rest != std::string::npos && line[rest] == '=') return n;
+        }
+    }
+    return 0;
+}
+
+// Each number given (not defaulted) must lie in its range; `fromSet` are the keys given by --set.
+void checkRanges(const KeyTable& k, const po::variables_map& vm, const std::set<std::string>& fromSet,
+                 const std::string* path) {
+    for (const NumericKey& n : k.numbers()) {
+        const auto it = vm.find(n.name);
+        if (it == vm.end() || it->second.defaulted() || inside(n.range, *n.value)) continue;
+        const double v = *n.value;
+        std::string what = n.name + " = " + text(v) + ": ";
+        what += std::isfinite(v) ? "outside " : "not a finite number; it must lie in ";
+        what += describe(n.range);
+        const char* hint = !std::isfinite(v) ? "" : v < n.range.lo ? n.range.tooLow : n.range.tooHigh;
+        if (*hint) what += std::string(" (") + hint + ")";
+        if (fromSet.count(n.name) || !path) throw InputError("--set " + what);
+        throw InputError(*path, lineOf(*path, n.name), what);
+    }
 }
 
 std::string overridesAsIni(const std::vector<std::string>& overrides) {
@@ -122,14 +239,17 @@ std::string overridesAsIni(const std::vector<std::string>& overrides) {
 }
 
 SceneConfig load(const std::string* path, const std::vector<std::string>& overrides) {
-    SceneConfig c;
-    std::string shape = "cube", orientation = "random", reading = "isotropic";
-    double restitution = -1;
-    po::options_description d = sceneKeys(c, shape, orientation, restitution, reading);
+    SceneKeys keys;
+    SceneConfig& c = keys.c;
+    const std::string &shape = keys.shape, &orientation = keys.orientation, &reading = keys.reading;
+    const po::options_description& d = keys.table.keys();
     po::variables_map vm;
     std::istringstream setIni(overridesAsIni(overrides));
+    std::set<std::string> fromSet;
     try {
-        po::store(po::parse_config_file(setIni, d), vm);  // first stored wins: --set over the file
+        const po::parsed_options given = po::parse_config_file(setIni, d);
+        for (const auto& o : given.options) fromSet.insert(o.string_key);
+        po::store(given, vm);  // first stored wins: --set over the file
     } catch (const po::error& e) {
         throw InputError(std::string("--set: ") + e.what());
     }
@@ -144,6 +264,7 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
         c.sourceFile = *path;
     }
     po::notify(vm);
+    checkRanges(keys.table, vm, fromSet, path);
     c.block.shape = parseBlockShape(shape);
     if (orientation != "random" && orientation != "fixed")
         throw InputError("release.orientation must be random or fixed, not '" + orientation + "'");
@@ -151,8 +272,6 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
     c.launch.enabled = vm.count("block.speed_m_s") > 0;
     c.tree.enabled = vm.count("tree.dbh_cm") > 0;
     if (c.launch.enabled && !c.tree.enabled) throw InputError("block.speed_m_s launches the block at a tree: set tree.dbh_cm too");
-    if (c.tree.enabled && !(c.tree.dbhCm > 0)) throw InputError("tree.dbh_cm must be positive");
-    if (c.launch.enabled && !(std::abs(c.launch.eccentricity) <= 1)) throw InputError("block.eccentricity must be in [-1, 1]");
     if (reading != "isotropic" && reading != "per_axis")
         throw InputError("stem.bending_reading must be isotropic or per_axis, not '" + reading + "'");
     c.stem.bending.reading = reading == "isotropic" ? BendingReading::Isotropic : BendingReading::PerAxis;
@@ -161,17 +280,10 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
     if (!vm.count("release.y_min_m")) c.release.yMin = c.release.y;
     if (!vm.count("release.y_max_m")) c.release.yMax = c.release.y;
     if (c.release.yMax < c.release.yMin) throw InputError("release.y_max_m is below release.y_min_m");
-    if (restitution >= 0) {
-        if (!(restitution > 0 && restitution <= 1)) throw InputError("soil.restitution must be in (0, 1]");
-        c.soilContact.dampingRatio = dampingRatioFromRestitution(restitution);
-    }
+    if (vm.count("soil.restitution")) c.soilContact.dampingRatio = dampingRatioFromRestitution(keys.restitution);
     if (c.block.shape == BlockShapeKind::Cube && vm.count("block.d1_m")) c.block.volumeM3 = c.block.d1 * c.block.d1 * c.block.d1;
-    if (!(c.integration.safety > 0 && c.integration.safety <= 1) || !(c.integration.stemSafety > 0 && c.integration.stemSafety <= 1))
-        throw InputError("integration.safety and integration.stem_safety must be in (0, 1]");
-    if (!(c.integration.energyTolerance > 0 && c.integration.energyWarning > 0))
-        throw InputError("integration.energy_tolerance and integration.energy_warning must be positive");
-    if (!(c.stop.maxTime > 0 && c.stop.restTime > 0 && c.stop.restDistance > 0))
-        throw InputError("stop.max_time_s, stop.rest_time_s and stop.rest_distance_m must be positive");
+    if (c.integration.anticipatedContacts < 1 || c.integration.anticipatedContacts > 1000)
+        throw InputError("integration.anticipated_contacts = " + text(c.integration.anticipatedContacts) + ": outside [1, 1000]");
     // Terrain paths are relative to the scene file.
     if (path) {
         const auto dir = std::filesystem::path(*path).parent_path();
@@ -188,12 +300,17 @@ SceneConfig loadScene(const std::string& path, const std::vector<std::string>& o
 SceneConfig sceneFromOverrides(const std::vector<std::string>& overrides) { return load(nullptr, overrides); }
 
 std::string describeSceneKeys() {
-    SceneConfig c;
-    std::string shape = "cube", orientation = "random", reading = "isotropic";
-    double restitution = -1;
+    const SceneKeys keys;
     std::ostringstream os;
-    os << sceneKeys(c, shape, orientation, restitution, reading);
+    os << keys.table.keys();
     return os.str();
+}
+
+std::vector<std::string> sceneNumberKeys() {
+    const SceneKeys keys;
+    std::vector<std::string> names;
+    for (const NumericKey& n : keys.table.numbers()) names.push_back(n.name);
+    return names;
 }
 
 }  // namespace sylva::dem

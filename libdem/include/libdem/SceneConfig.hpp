@@ -93,5 +93,7 @@ SceneConfig loadScene(const std::string& path, const std::vector<std::string>& o
 SceneConfig sceneFromOverrides(const std::vector<std::string>& overrides);
 // All keys with their defaults and meaning, for `sylvarock simulate --help-scene`.
 std::string describeSceneKeys();
+// The keys that hold a number with a physical range (refused outside it, with the key and the range).
+std::vector<std::string> sceneNumberKeys();
 
 }  // namespace sylva::dem

@@ -52,6 +52,23 @@ bool parse(int argc, const char* const* argv, const po::options_description& opt
     return true;
 }
 
+void validate(boost::any& v, const std::vector<std::string>& tokens, Seed*, int) {
+    const std::string& t = po::validators::get_single_string(tokens);
+    errno = 0;
+    char* end = nullptr;
+    const unsigned long long n = t.empty() || t[0] == '-' || t[0] == '+' ? 0 : std::strtoull(t.c_str(), &end, 10);
+    if (!end || *end != '\0' || errno == ERANGE)
+        throw po::error("--seed '" + t + "': a seed is a whole number from 0 to 18446744073709551615");
+    v = Seed{static_cast<unsigned long>(n)};
+}
+
+int threadCount(const po::variables_map& vm) {
+    const int t = vm["threads"].as<int>();
+    if (t < 0 || t > 4096)
+        throw InputError("--threads " + std::to_string(t) + ": give 0 (all cores) or a number of threads from 1 to 4096");
+    return t;
+}
+
 std::vector<double> numberList(const std::string& option, const std::string& text, std::size_t n) {
     std::vector<double> out;
     std::stringstream ss(text);

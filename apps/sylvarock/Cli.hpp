@@ -33,6 +33,15 @@ bool parse(int argc, const char* const* argv, const po::options_description& opt
 // naming the option on a bad list.
 std::vector<double> numberList(const std::string& option, const std::string& text, std::size_t n = 0);
 
+// A campaign seed: a whole number in [0, 2^64). program_options alone would read "-1" as 2^64 - 1.
+struct Seed {
+    unsigned long value = 1;
+};
+void validate(boost::any& v, const std::vector<std::string>& tokens, Seed*, int);
+
+// --threads: 0 (all cores) or a count; throws InputError on a negative or absurd one.
+int threadCount(const po::variables_map& vm);
+
 // True when standard error is a terminal (progress bars are drawn only then).
 bool stderrIsTerminal();
 

@@ -27,7 +27,7 @@ int runAssess(int argc, const char* const* argv) {
         ("runs", po::value<int>()->default_value(100), "M: block runs per forest realisation")
         ("realisations", po::value<int>()->default_value(5), "K: virtual forests per stand and structure (A and NA)")
         ("baseline-runs", po::value<int>()->default_value(1000), "B: block runs without forest")
-        ("seed", po::value<unsigned long>()->default_value(1), "seed; forests, runs and bootstrap seeds derive from it")
+        ("seed", po::value<Seed>()->default_value(Seed{}, "1"), "seed; forests, runs and bootstrap seeds derive from it")
         ("bootstrap", po::value<int>()->default_value(2000), "bootstrap replicates of the PF50 interval")
         ("confidence", po::value<double>()->default_value(0.95, "0.95"), "confidence level of the interval")
         ("threads", po::value<int>()->default_value(0), "worker threads (0: all cores); results do not depend on it")
@@ -53,10 +53,10 @@ int runAssess(int argc, const char* const* argv) {
     a.design.runs = vm["runs"].as<int>();
     a.design.realisations = vm["realisations"].as<int>();
     a.design.baselineRuns = vm["baseline-runs"].as<int>();
-    a.design.seed = vm["seed"].as<unsigned long>();
+    a.design.seed = vm["seed"].as<Seed>().value;
     a.outDir = vm["out"].as<std::string>();
     a.resume = vm["resume"].as<bool>();
-    a.threads = vm["threads"].as<int>();
+    a.threads = threadCount(vm);
     a.bootstrapReplicates = vm["bootstrap"].as<int>();
     a.confidence = confidence;
     a.onNote = [](const std::string& text) { std::cerr << "sylvarock assess: " << text << "\n"; };

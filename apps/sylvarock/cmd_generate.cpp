@@ -47,7 +47,7 @@ int runGenerate(int argc, const char* const* argv) {
         ("structure", po::value<std::string>()->required(),
          "aggregated (A: coppice stools resampled from the inventory, then single trees) or random (NA: uniform stems)")
         ("extent", po::value<std::string>()->required(), "xmin,ymin,xmax,ymax of the forest, in metres")
-        ("seed", po::value<long long>()->default_value(1), "seed of the random generator (GSL mt19937), >= 0")
+        ("seed", po::value<Seed>()->default_value(Seed{}, "1"), "seed of the random generator (GSL mt19937), >= 0")
         ("realisations", po::value<long>()->default_value(1), "number of forests K; realisation k uses seed + k - 1")
         ("out", po::value<std::string>()->required(),
          "output CSV; with K > 1 F.csv becomes F_001.csv ... F_K.csv, or put {k} in the name (F_{k}.csv)");
@@ -62,8 +62,7 @@ int runGenerate(int argc, const char* const* argv) {
     stand::GenerationSettings settings;
     settings.structure = stand::parseForestStructure(vm["structure"].as<std::string>());
     const stand::Window extent = parseExtent(vm["extent"].as<std::string>());
-    const long long seed = vm["seed"].as<long long>();
-    if (seed < 0) throw InputError("--seed: must be >= 0, got " + std::to_string(seed));
+    const unsigned long seed = vm["seed"].as<Seed>().value;
     const long count = vm["realisations"].as<long>();
     if (count < 1) throw InputError("--realisations: must be >= 1, got " + std::to_string(count));
 
@@ -73,7 +72,7 @@ int runGenerate(int argc, const char* const* argv) {
     const stand::StandCatalogue catalogue(inventory, stemsPath);
 
     for (long k = 1; k <= count; ++k) {
-        settings.seed = static_cast<unsigned long>(seed) + static_cast<unsigned long>(k - 1);
+        settings.seed = seed + static_cast<unsigned long>(k - 1);
         const stand::GeneratedForest g = stand::generateForest(catalogue, extent, settings);
         for (const auto& w : g.warnings) std::cerr << "sylvarock generate: warning: " << w << "\n";
         const std::string path = realisationPath(vm["out"].as<std::string>(), k, count);

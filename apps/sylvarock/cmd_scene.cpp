@@ -8,6 +8,7 @@
 
 #include "Cli.hpp"
 #include "libdem/Campaign.hpp"
+#include "libdem/SoilContact.hpp"
 #include "libdem/Stem.hpp"
 #include "libstand/InputError.hpp"
 
@@ -50,12 +51,39 @@ StemCount writeStemsCsv(const std::string& path, const dem::Scene& scene) {
     return count;
 }
 
+// What another DEM code needs to start the same run and end it where simulate does (BlockRun: the
+// block leaves the soil bed's extent).
+void writeRelease(const std::string& path, const dem::Scene& scene, const dem::Release& release) {
+    std::ofstream rel(path);
+    const dem::RigidBody& block = scene.blockTemplate();
+    const auto& q = release.orientation;
+    const dem::Vec3& p = release.position;
+    const dem::Vec3& inertia = block.principalInertia();
+    const dem::SoilBed& soil = scene.soil();
+    rel << std::setprecision(12) << "x,y,z,qw,qx,qy,qz,mass_kg,ixx_kg_m2,iyy_kg_m2,izz_kg_m2,xmin,xmax,ymin,ymax\n"
+        << p.x() << ',' << p.y() << ',' << p.z() << ',' << q.w() << ',' << q.x() << ',' << q.y() << ',' << q.z() << ','
+        << block.mass() << ',' << inertia.x() << ',' << inertia.y() << ',' << inertia.z() << ',' << soil.xmin() << ','
+        << soil.xmax() << ',' << soil.ymin() << ',' << soil.ymax() << '\n';
+    if (!rel) throw InputError(path, 0, "write failed (disk full?)");
+}
+
+void writeSoilContact(const std::string& path, const dem::Scene& scene) {
+    const dem::SoilContactParams& p = scene.config().soilContact;
+    const dem::SoilContact law(p, scene.blockTemplate().mass());  // the block/soil law simulate builds (Scene)
+    std::ofstream out(path);
+    out << std::setprecision(12) << "kn_n_m,kt_n_m,damping_n_s,friction_deg,normal_force_floored,gravity_m_s2\n"
+        << p.kn << ',' << p.kappa * p.kn << ',' << law.dampingCoefficient() << ',' << p.frictionDeg << ','
+        << (p.dashpotPulls ? 0 : 1) << ',' << scene.config().gravity << '\n';  // Eqs. 14-19
+    if (!out) throw InputError(path, 0, "write failed (disk full?)");
+}
+
 int runScene(int argc, const char* const* argv) {
     po::options_description o("scene");
     std::vector<std::string> sets;
     o.add_options()("action", po::value<std::string>(), "export")("scene", po::value<std::string>(), "scene INI file")(
         "forest", po::value<std::string>(), kForestHelp)(
-        "seed", po::value<unsigned long>()->default_value(1), "campaign seed: the release written is run 0's")(
+        "seed", po::value<Seed>()->default_value(Seed{}, "1"), "campaign seed")(
+        "run", po::value<long>()->default_value(0), "the run of the campaign whose release is written (0, 1, ...)")(
         "out", po::value<std::string>(), "output directory")(
         "set", po::value(&sets)->composing(), "override a scene key: --set section.key=value");
     po::positional_options_description pos;
@@ -71,7 +99,11 @@ int runScene(int argc, const char* const* argv) {
                "sylvarock scene export --scene FILE.ini [--forest F.csv] [--seed S] --out DIR",
                "  sylvarock scene export --scene data/scenes/no-forest.ini --forest forest.csv --out out/scene\n"
                "  sylvarock scene export --scene data/scenes/single-tree.ini --set tree.dbh_cm=30 --out out/tree\n"
-               "writes soil_spheres.csv (x,y,z,r), block_spheres.csv (body frame: x,y,z,r), release.csv and\n"
+               "  sylvarock scene export --scene data/scenes/no-forest.ini --seed 4 --run 7 --out out/run7\n"
+               "writes soil_spheres.csv (x,y,z,r), block_spheres.csv (body frame: x,y,z,r), release.csv (the\n"
+               "block's centre, orientation, mass and principal inertia at the release of run --run of campaign\n"
+               "--seed, and the domain it stops on leaving), soil_contact.csv (Eqs. 14-19: K_n, K_t, alpha,\n"
+               "phi, gravity; the block/soil law as simulate applies it, for another DEM code) and\n"
                "stems.csv: every stem of the forest (forest.file or --forest) or of the single tree (tree.* keys)\n"
                "at rest, one row per node from the foot (node 0) up: tree,node,x,y,z,radius (m),\n"
                "linked_to (the node below, -1 at the foot),dbh_cm,stool (empty for a stem on its own roots)\n"))
@@ -86,11 +118,10 @@ int runScene(int argc, const char* const* argv) {
     block << "x,y,z,r\n";
     for (const auto& s : scene.blockTemplate().spheres())
         block << s.offset.x() << ',' << s.offset.y() << ',' << s.offset.z() << ',' << s.radius << '\n';
-    const auto first = dem::drawRelease(scene, dem::runSeed(vm["seed"].as<unsigned long>(), 0));
-    const auto& q = first.orientation;
-    std::ofstream rel(out + "/release.csv");
-    rel << "x,y,z,qw,qx,qy,qz,mass_kg\n" << first.position.x() << ',' << first.position.y() << ',' << first.position.z()
-        << ',' << q.w() << ',' << q.x() << ',' << q.y() << ',' << q.z() << ',' << scene.blockTemplate().mass() << '\n';
+    const long run = vm["run"].as<long>();
+    if (run < 0) throw InputError("--run must be 0 or more (the run of the campaign whose release is written)");
+    writeRelease(out + "/release.csv", scene, dem::drawRelease(scene, dem::runSeed(vm["seed"].as<Seed>().value, run)));
+    writeSoilContact(out + "/soil_contact.csv", scene);
     const StemCount stems = writeStemsCsv(out + "/stems.csv", scene);
     std::printf("%zu soil spheres, %zu block spheres, %zu stems (%zu stem nodes) written to %s/\n", scene.soil().size(),
                 scene.blockTemplate().spheres().size(), stems.stems, stems.nodes, out.c_str());

@@ -46,7 +46,7 @@ int runSimulate(int argc, const char* const* argv) {
     o.add_options()
         ("scene", po::value<std::string>(), "scene INI file (terrain, block, contact laws, release, stop); defaults are the paper's Table 2")
         ("runs", po::value<int>(), "number of block runs (default 100; 1 for a single-tree launch)")
-        ("seed", po::value<unsigned long>()->default_value(1), "campaign seed; run i uses a seed derived from (seed, i)")
+        ("seed", po::value<Seed>()->default_value(Seed{}, "1"), "campaign seed; run i uses a seed derived from (seed, i)")
         ("threads", po::value<int>()->default_value(0), "worker threads (0: all cores); results do not depend on it")
         ("out", po::value<std::string>(), "output directory (runs.csv, summary.json, impacts.csv, figures)")
         ("forest", po::value<std::string>(), kForestHelp)
@@ -84,8 +84,8 @@ int runSimulate(int argc, const char* const* argv) {
 
     dem::CampaignOptions c;
     c.runs = runs > 0 ? runs : (scene.config().launch.enabled ? 1 : 100);
-    c.seed = vm["seed"].as<unsigned long>();
-    c.threads = vm["threads"].as<int>();
+    c.seed = vm["seed"].as<Seed>().value;
+    c.threads = threadCount(vm);
     c.run.recordTrajectory = vm["trajectory"].as<bool>();
     ProgressBar bar(stderrIsTerminal());
     c.onRunDone = [&bar](const dem::RunResult&, int done, int total) { bar.update(done, total); };

@@ -71,6 +71,19 @@ TEST(SimulateCli, BadSceneKeyIsRefusedWithItsName) {
     EXPECT_NE(cli("simulate --scene /nonexistent.ini --out /tmp/x"), 0);
 }
 
+// program_options reads "-1" into an unsigned seed as 2^64 - 1 and into --threads as a count: both
+// would run, on a seed or a thread count the user never gave (issue 13).
+TEST(SimulateCli, NegativeSeedsAndThreadCountsAreRefused) {
+    const std::string base = std::string("simulate --scene ") + SYLVAROCK_DATA + "/scenes/no-forest.ini --runs 1 --no-figures ";
+    const auto out = std::filesystem::temp_directory_path() / "sylvarock-tests" / "simulate-seed";
+    for (const char* bad : {"--seed -1", "--seed 1.5", "--seed 18446744073709551616", "--threads -1"}) {
+        std::filesystem::remove_all(out);
+        EXPECT_NE(cli(base + bad + " --out " + out.string()), 0) << bad;
+        EXPECT_FALSE(std::filesystem::exists(out / "runs.csv")) << bad;
+    }
+    EXPECT_EQ(cli(base + "--seed 18446744073709551615 --threads 1 --out " + out.string()), 0);
+}
+
 // A run that goes numerically wrong is kept as failed, with its message, and left out of the
 // statistics; the other runs of the campaign still run. Forcing a step 20 times the soil contacts'
 // limit makes every run fail at its first landing.

@@ -135,3 +135,36 @@ TEST(SceneExportCli, UnreadableForestIsRefusedWithItsName) {
     EXPECT_NE(r.output.find("error"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find(missing), std::string::npos) << r.output;
 }
+
+// What another DEM code needs to rerun simulate's run i (the Yade cross-check, bench/yade): run i's
+// release, the solid's mass and inertia, the domain the run ends on leaving, and the block/soil law.
+TEST(SceneExportCli, WritesTheReleaseOfTheRunAskedAndTheBlockSoilLaw) {
+    const auto dir = std::filesystem::temp_directory_path() / "sylvarock-export-release";
+    std::filesystem::remove_all(dir);
+    const std::string scene = std::string(SYLVAROCK_DATA) + "/scenes/no-forest.ini";
+    const std::string common = "--scene " + scene + " --set terrain.width_m=20 --set release.y_m=10 --seed 4 ";
+    ASSERT_EQ(sceneExport(common + "--run 0 --out " + (dir / "r0").string()).status, 0);
+    ASSERT_EQ(sceneExport(common + "--run 3 --out " + (dir / "r3").string()).status, 0);
+    auto row = [](const std::filesystem::path& p) {
+        std::ifstream in(p);
+        std::string header, values;
+        std::getline(in, header);
+        std::getline(in, values);
+        std::map<std::string, double> r;
+        std::istringstream h(header), v(values);
+        for (std::string k, x; std::getline(h, k, ',') && std::getline(v, x, ',');) r[k] = std::stod(x);
+        return r;
+    };
+    const auto r0 = row(dir / "r0/release.csv"), r3 = row(dir / "r3/release.csv");
+    EXPECT_NE(r0.at("qw"), r3.at("qw")) << "runs 0 and 3 drew the same orientation";
+    EXPECT_NEAR(r0.at("mass_kg"), 1350, 1e-6);                   // 0.5 m^3 at 2700 kg/m^3
+    EXPECT_NEAR(r0.at("ixx_kg_m2"), 1350 * std::pow(0.5, 2.0 / 3) / 6, 1e-6);  // cube: m a^2 / 6
+    EXPECT_EQ(r0.at("ymin"), 0);
+    EXPECT_EQ(r0.at("ymax"), 20);
+    const auto law = row(dir / "r0/soil_contact.csv");
+    EXPECT_EQ(law.at("kn_n_m"), 1e6);
+    EXPECT_EQ(law.at("kt_n_m"), 0.05e6);                                       // Eq. 19
+    EXPECT_NEAR(law.at("damping_n_s"), 0.54 * 2 * std::sqrt(1e6 * 1350), 1e-3);  // Eqs. 15-16
+    EXPECT_FALSE(sceneExport(common + "--run -1 --out " + (dir / "bad").string()).status == 0);
+    std::filesystem::remove_all(dir);
+}

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace sylva::stand {
 
@@ -22,5 +23,13 @@ double treeHeightM(double dbhCm) {
 double crownLengthM(double heightM) { return 0.40642 * heightM; }  // Eq. 12
 
 double crownMassKg(double dbhCm) { return 0.0031 * std::pow(dbhCm, 3.161); }  // Eq. 13 (Bartelink 1997), D_stem in cm
+
+std::string dbhProblem(double dbhCm) {
+    std::ostringstream os;
+    os << "DBH " << dbhCm << " cm";
+    if (!(dbhCm > 0)) return os.str() + " is not positive";
+    if (dbhCm > kLargestDbhCm) return os.str() + " is above " + std::to_string(int(kLargestDbhCm)) + " cm: diameters in mm?";
+    return {};
+}
 
 }  // namespace sylva::stand

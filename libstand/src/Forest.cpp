@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <unordered_map>
 
@@ -54,6 +55,7 @@ Forest readForestCsv(const std::string& path) {
     Forest forest;
     forest.trees.reserve(t.rows());
     std::unordered_map<long, long> lineOfStem;
+    std::map<std::pair<long long, long long>, long> lineAt;  // position to the mm -> line
     for (std::size_t r = 0; r < t.rows(); ++r) {
         Tree tree;
         tree.id = cStem ? t.integer(r, *cStem) : static_cast<long>(r + 1);
@@ -62,7 +64,12 @@ Forest readForestCsv(const std::string& path) {
         tree.x = t.number(r, cx);
         tree.y = t.number(r, cy);
         tree.dbhCm = t.number(r, cd);
-        if (tree.dbhCm <= 0) t.fail(r, cd, "diameter must be positive, got " + t.text(r, cd));
+        if (const std::string why = dbhProblem(tree.dbhCm); !why.empty()) t.fail(r, cd, why);
+        // Two stems at one place (a line repeated by a concatenation) would start inside each other.
+        const auto cell = std::make_pair(std::llround(tree.x * 1e3), std::llround(tree.y * 1e3));
+        if (const auto [it, fresh] = lineAt.emplace(cell, t.lineOf(r)); !fresh)
+            t.fail(r, "stem at (" + t.text(r, cx) + ", " + t.text(r, cy) + ") stands where the stem of line " +
+                          std::to_string(it->second) + " stands (within 1 mm): a repeated line?");
         if (cSpecies) tree.species = t.text(r, *cSpecies);
         if (cStool && !t.text(r, *cStool).empty()) tree.stool = t.integer(r, *cStool);
 

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "libstand/Allometry.hpp"
 #include "libstand/CsvTable.hpp"
 #include "libstand/InputError.hpp"
 
@@ -125,7 +126,7 @@ Inventory readInventory(const std::string& stemsCsv, const std::string& plotsCsv
         s.x = t.number(r, cX);
         s.y = t.number(r, cY);
         s.dbhCm = t.number(r, cDbh);
-        if (s.dbhCm <= 0) t.fail(r, cDbh, "diameter " + t.text(r, cDbh) + " cm is not positive");
+        if (const std::string why = dbhProblem(s.dbhCm); !why.empty()) t.fail(r, cDbh, why);
         if (cSpecies) s.species = t.text(r, *cSpecies);
         if (cStool && !t.text(r, *cStool).empty()) s.stool = t.text(r, *cStool);
         const auto plot = plotById.find(s.plot);

@@ -84,8 +84,8 @@ TEST(ForestReader, GivenHeightSetsTheCrownLength) {
 
 TEST(ForestReader, RejectsBadRowsWithTheirLine) {
     expectRejected("bad_x.csv", "x,y,dbh_cm\n1,2,20\n1,abc,20\n", 3, "column 'y'");
-    expectRejected("neg_dbh.csv", "x,y,dbh_cm\n1,2,20\n\n1,2,-3\n", 4, "diameter must be positive");
-    expectRejected("zero_dbh.csv", "x,y,dbh_cm\n1,2,0\n", 2, "diameter must be positive");
+    expectRejected("neg_dbh.csv", "x,y,dbh_cm\n1,2,20\n\n1,3,-3\n", 4, "DBH -3 cm is not positive");
+    expectRejected("zero_dbh.csv", "x,y,dbh_cm\n1,2,0\n", 2, "DBH 0 cm is not positive");
     expectRejected("dup_stem.csv", "stem,x,y,dbh_cm\n5,1,2,20\n5,3,4,20\n", 3, "already used on line 2");
     expectRejected("bad_stool.csv", "x,y,dbh_cm,stool\n1,2,20,A7\n", 2, "column 'stool'");
     expectRejected("fields.csv", "x,y,dbh_cm\n1,2,20\n1,2\n", 3, "expected 3 fields");
@@ -93,6 +93,10 @@ TEST(ForestReader, RejectsBadRowsWithTheirLine) {
     expectRejected("height.csv", "x,y,dbh_cm,height_m\n1,2,20,-1\n", 2, "height must be positive");
     expectRejected("mass.csv", "x,y,dbh_cm,crown_mass_kg\n1,2,20,-5\n", 2, "crown mass");
     expectRejected("nan.csv", "x,y,dbh_cm\n1,nan,20\n", 2, "not a finite number");
+    // Issue 13: DBH typed in mm gave G = 3 273 m2/ha without a word; a line repeated 2 001 times
+    // ran for minutes with 2 001 stems inside one another.
+    expectRejected("mm.csv", "x,y,dbh_cm\n1,2,20\n3,4,250\n", 3, "DBH 250 cm is above 200 cm: diameters in mm?");
+    expectRejected("repeated.csv", "x,y,dbh_cm\n1,2,20\n5,6,30\n1.0004,2,20\n", 4, "where the stem of line 2 stands");
 }
 
 TEST(ForestReader, RejectsAFileWithoutDiameters) {

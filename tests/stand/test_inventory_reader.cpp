@@ -80,6 +80,7 @@ TEST(InventoryReader, StandIsNamedAfterTheStemsFile) {
 TEST(InventoryReader, MissingColumn) { expectBadStems("stems_missing_dbh_column.csv", 1, "missing column 'dbh_cm'"); }
 TEST(InventoryReader, NonNumericDiameter) { expectBadStems("stems_nonnumeric_dbh.csv", 3, "'abc' is not a finite number"); }
 TEST(InventoryReader, NegativeDiameter) { expectBadStems("stems_negative_dbh.csv", 3, "is not positive"); }
+TEST(InventoryReader, DiameterInMillimetres) { expectBadStems("stems_dbh_in_mm.csv", 3, "DBH 310 cm is above 200 cm: diameters in mm?"); }
 TEST(InventoryReader, StemOutsideItsPlot) { expectBadStems("stems_outside_plot.csv", 3, "lies outside its plot '2'"); }
 TEST(InventoryReader, DuplicateStemId) { expectBadStems("stems_duplicate_id.csv", 4, "duplicate stem id '1' (also on line 2)"); }
 TEST(InventoryReader, StemOfPlotWithoutWindow) { expectBadStems("stems_unknown_plot.csv", 3, "plot '3' has no window"); }

@@ -37,6 +37,12 @@ std::string lower(std::string s) {
     return s;
 }
 
+std::string number(double v) {
+    std::ostringstream os;
+    os << v;
+    return os.str();
+}
+
 struct HeaderValue {
     double value;
     long line;
@@ -119,11 +125,24 @@ ElevationGrid ElevationGrid::readAsc(const std::string& path) {
         }
         if (inHeader) {  // first line of values: the header is complete
             g.cell_ = header.require("cellsize", lineNo);
-            if (!(g.cell_ > 0)) throw InputError(path, header.find("cellsize")->line, "cellsize must be positive");
+            // Metres of a projected CRS: sub-centimetre cells are degrees (project the DTM first),
+            // kilometre cells no rockfall DTM has.
+            if (!(g.cell_ >= 0.01 && g.cell_ <= 1000))
+                throw InputError(path, header.find("cellsize")->line,
+                                 "cellsize " + number(g.cell_) + " is outside [0.01, 1000] m (a DTM in "
+                                 "geographic degrees? reproject it to metres)");
             g.ncols_ = header.count("ncols", lineNo);
             g.nrows_ = header.count("nrows", lineNo);
             g.x0_ = header.firstCentre("x", g.cell_, lineNo);
             g.y0_ = header.firstCentre("y", g.cell_, lineNo);
+            // Beyond 1e8 m a cell no longer adds to a coordinate in double precision.
+            for (const std::string axis : {"x", "y"}) {
+                const double first = axis == "x" ? g.x0_ : g.y0_;
+                if (std::abs(first) <= 1e8) continue;
+                const auto given = header.find(axis + "llcorner") ? header.find(axis + "llcorner") : header.find(axis + "llcenter");
+                throw InputError(path, given->line, axis + "ll corner or centre " + number(first) +
+                                                        " is beyond 1e8 m: not a projected map coordinate");
+            }
             if (const auto nd = header.find("nodata_value")) nodata = nd->value;
         }
         if (static_cast<int>(fileRows.size()) == g.nrows_)

@@ -9,6 +9,7 @@
 #include <limits>
 #include <memory>
 #include <numeric>
+#include <sstream>
 
 #include "libstand/InputError.hpp"
 
@@ -63,6 +64,16 @@ SoilBed::SoilBed(const SoilBedParams& params, double xmin, double xmax, double y
     perRow_ = static_cast<std::uint32_t>(columns);
 }
 
+void SoilBed::requireFits(double rows, const std::string& extent) const {
+    const double spheres = rows * perRow_;
+    if (spheres <= kMaxSpheres) return;
+    std::ostringstream os;
+    os << "soil bed: " << extent << " at " << spacing_ << " m between spheres needs " << spheres
+       << " soil spheres, above the " << kMaxSpheres << " (~" << kMaxSpheres * sizeof(double) / 1e6
+       << " MB) that fit: a length in mm, or a terrain much larger than a slope?";
+    throw InputError(os.str());
+}
+
 void SoilBed::setRows(std::vector<Row> rows) {
     if (static_cast<double>(rows.size()) * perRow_ > static_cast<double>(std::numeric_limits<std::uint32_t>::max()))
         throw InputError("soil bed: more spheres than 32-bit ids can number; reduce the terrain");
@@ -89,6 +100,9 @@ SoilBed SoilBed::fromProfile(const SlopeProfile& profile, const SoilBedParams& p
     const auto& x = profile.xs();
     const auto& z = profile.zs();
     const auto segmentLength = [&](std::size_t i) { return std::hypot(x[i + 1] - x[i], z[i + 1] - z[i]); };
+    std::ostringstream extent;
+    extent << "a profile " << profile.length() << " m long and " << params.width << " m wide";
+    bed.requireFits(std::floor(profile.length() / d) + 1, extent.str());
     std::vector<Row> rows;
     std::size_t i = 0;
     double segmentStart = 0.0, L = segmentLength(0);
@@ -113,6 +127,9 @@ SoilBed SoilBed::fromGrid(const ElevationGrid& grid, const SoilBedParams& params
     bed.grid_ = grid;
     const double R = bed.radius_, d = bed.spacing_;
     RowOffsets offsets(params.seed, R, d);
+    std::ostringstream extent;
+    extent << "a DTM of " << grid.xmax() - grid.xmin() << " m by " << grid.ymax() - grid.ymin() << " m";
+    bed.requireFits(std::floor((grid.xmax() - grid.xmin()) / d) + 1, extent.str());
     std::vector<Row> rows;
     for (long k = 0; grid.xmin() + k * d <= grid.xmax(); ++k) {
         Row row{grid.xmin() + k * d, offsets.nextColumn0(grid.ymin()), std::vector<double>(bed.perRow_)};

@@ -74,7 +74,14 @@ TEST(ElevationGridReader, MissingHeaderKeyNamesWhereTheHeaderEnds) {
     expectError("grid_missing_cellsize.asc", 5, "cellsize");
 }
 
-TEST(ElevationGridReader, NonPositiveCellSizeIsRejected) { expectError("grid_bad_cellsize.asc", 5, "positive"); }
+TEST(ElevationGridReader, NonPositiveCellSizeIsRejected) { expectError("grid_bad_cellsize.asc", 5, "cellsize -2 is outside"); }
+
+// Issue 13: a 100 km cell ran for ever building its soil bed; at 1e308 a cell no longer moves a
+// coordinate and the row loop never ended.
+TEST(ElevationGridReader, CellSizeAndCornerOutsideAMapAreRejected) {
+    expectError("grid_cellsize_km.asc", 5, "cellsize 100000 is outside [0.01, 1000] m");
+    expectError("grid_corner_far.asc", 3, "beyond 1e8 m");
+}
 
 TEST(ElevationGridReader, CornerAndCentreTogetherAreRejected) {
     expectError("grid_corner_and_center.asc", 4, "not both");

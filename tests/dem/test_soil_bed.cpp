@@ -101,6 +101,20 @@ TEST(SoilBed, RejectsANonPositiveWidth) {
     EXPECT_THROW(SoilBed::fromProfile(p, params(-5.0)), InputError);
 }
 
+// A profile 1e9 m long (a typo, or mm) would need 4e11 spheres: refused at once, before any
+// allocation, naming the extent (issue 13: std::bad_alloc after a minute).
+TEST(SoilBed, RefusesABedThatWouldNotFitBeforeAllocatingIt) {
+    const SlopeProfile p({0, 1e9}, {1000, 0});
+    try {
+        SoilBed::fromProfile(p, params(200));
+        FAIL() << "a 1e9 m profile was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("1e+09 m long"), std::string::npos) << e.what();
+    }
+    // The full stand-in slope (630 m x 200 m, 2.8e5 spheres) is far below the cap.
+    EXPECT_NO_THROW(SoilBed::fromProfile(SlopeProfile({0, 630}, {300, 0}), params(200)));
+}
+
 // On a straight 30 deg profile every centre lies R below the line along its normal, and rows
 // follow each other at the curvilinear spacing d. Extra collinear vertices exercise the walk
 // from segment to segment. Tolerance 1e-9 m: coordinates ~100 m, a few operations each.

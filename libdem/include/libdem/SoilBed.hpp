@@ -32,6 +32,9 @@ public:
     // Rows at curvilinear spacing d along the profile (from xmin); each centre is R below the
     // profile along the local normal, so the sphere's top touches the profile. Extruded over
     // y in [0, width].
+    // Largest bed built: 5e7 spheres (~400 MB of heights) covers ~25 km2 at Table 2's spacing.
+    static constexpr double kMaxSpheres = 5e7;
+
     static SoilBed fromProfile(const SlopeProfile& profile, const SoilBedParams& params);
     // Rows at horizontal spacing d in x over the grid's extent (params.width is not used: the DTM
     // gives the extent), spheres at spacing d in y. Centres stay on that (x, y) lattice and lie
@@ -70,6 +73,8 @@ private:
     };
     // Sets radius, spacing, the surface's extent and perRow (enough columns to cover [ymin, ymax]).
     SoilBed(const SoilBedParams& params, double xmin, double xmax, double ymin, double ymax);
+    // Refuses, before any allocation, a bed of `rows` rows that would exceed kMaxSpheres.
+    void requireFits(double rows, const std::string& extent) const;
     void setRows(std::vector<Row> rows);  // sorts by x and flattens
 
     double radius_ = 0.7, spacing_ = 0.721;

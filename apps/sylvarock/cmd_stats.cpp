@@ -1,10 +1,9 @@
 // sylvarock stats: dendrometric and spatial statistics of an inventory or a point pattern
 // (docs/stand.md): N, G, DBH, coppice stools, Clark-Evans index and pair correlation g(r).
-#include <sys/stat.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <limits>
@@ -98,7 +97,10 @@ void writePcfCsv(const std::string& path, const stand::PairCorrelation& g) {
 }
 
 void drawFigures(const std::string& dir, const stand::Inventory& inv, const stand::PairCorrelation& g) {
-    ::mkdir(dir.c_str(), 0777);  // an existing directory is fine; a failure shows when gnuplot writes
+    // gnuplot, unable to open its output, would print the SVG on the terminal instead.
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec || !std::filesystem::is_directory(dir)) throw InputError(dir, 0, "cannot create the --plot-dir directory");
     std::ostringstream gp;
     gp << "set terminal svg size 800,500 dynamic\nset grid\n$pcf << EOD\n";
     for (std::size_t i = 1; i < g.r.size(); ++i)  // g is undefined at r = 0

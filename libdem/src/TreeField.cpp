@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "libstand/InputError.hpp"
 
@@ -11,9 +12,13 @@ TreeField::TreeField(const stand::Forest& forest, const SoilBed& soil) {
     if (forest.trees.empty()) return;
     double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
     for (const auto& t : forest.trees) {
-        if (t.x < soil.xmin() || t.x > soil.xmax() || t.y < soil.ymin() || t.y > soil.ymax())
-            throw InputError("forest: stem " + std::to_string(t.id) + " at (" + std::to_string(t.x) + ", " +
-                             std::to_string(t.y) + ") is outside the terrain");
+        if (t.x < soil.xmin() || t.x > soil.xmax() || t.y < soil.ymin() || t.y > soil.ymax()) {
+            std::ostringstream what;
+            what << (forest.source.empty() ? "forest: " : "") << "stem " << t.id << " at (" << t.x << ", " << t.y
+                 << ") is outside the terrain (x in [" << soil.xmin() << ", " << soil.xmax() << "], y in ["
+                 << soil.ymin() << ", " << soil.ymax() << "] m): a forest in another frame or CRS?";
+            throw InputError(forest.source, t.line, what.str());
+        }
         StemGeometry g;
         g.dbh = t.dbhCm / 100;
         g.height = t.heightM;

@@ -53,11 +53,13 @@ Forest readForestCsv(const std::string& path) {
                cCrownMass = t.index("crown_mass_kg");
 
     Forest forest;
+    forest.source = path;
     forest.trees.reserve(t.rows());
     std::unordered_map<long, long> lineOfStem;
     std::map<std::pair<long long, long long>, long> lineAt;  // position to the mm -> line
     for (std::size_t r = 0; r < t.rows(); ++r) {
         Tree tree;
+        tree.line = t.lineOf(r);
         tree.id = cStem ? t.integer(r, *cStem) : static_cast<long>(r + 1);
         if (const auto [it, fresh] = lineOfStem.emplace(tree.id, t.lineOf(r)); !fresh)
             t.fail(r, *cStem, "stem id " + std::to_string(tree.id) + " already used on line " + std::to_string(it->second));

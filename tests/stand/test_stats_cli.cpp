@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -118,10 +119,14 @@ TEST(StatsCli, PcfFileAgreesWithSpatstat) {
     EXPECT_GT(compared, 40);
 }
 
+// The folder is created with its parents (issue 13: with a missing parent gnuplot printed the SVG
+// on the terminal).
 TEST(StatsCli, FiguresWithGnuplot) {
-    const std::string dir = ::testing::TempDir() + "/stats_cli_figures";
+    const std::string dir = ::testing::TempDir() + "/stats_cli_figures/nested/deeper";
+    std::filesystem::remove_all(::testing::TempDir() + "/stats_cli_figures");
     const CliRun r = stats("--stems " + data("stems_ok.csv") + " --plots " + data("plots_ok.csv") + " --plot-dir " + dir);
     ASSERT_EQ(r.status, 0) << r.err;  // never fails because of figures
+    EXPECT_EQ(r.out.find("<svg"), std::string::npos) << "an SVG went to the terminal";
     if (std::system("gnuplot --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "gnuplot not installed";
     EXPECT_NE(slurp(dir + "/pcf.svg").find("<svg"), std::string::npos);
     EXPECT_NE(slurp(dir + "/dbh_histogram.svg").find("<svg"), std::string::npos);

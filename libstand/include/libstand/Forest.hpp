@@ -16,10 +16,12 @@ struct Tree {
     double heightM = 0;         // H_T, Eq. 11
     double crownLengthM = 0;    // L_C, Eq. 12
     double crownMassKg = 0;     // m_C, Eq. 13
+    long line = 0;              // its line in the file it was read from (0: generated)
 };
 
 struct Forest {
     std::vector<Tree> trees;
+    std::string source;  // the file it was read from, for messages (empty: generated)
 };
 
 // Columns: stem,x,y,dbh_cm,species,stool,height_m,crown_length_m,crown_mass_kg.

@@ -47,6 +47,7 @@ stand::Inventory readInput(const po::variables_map& vm) {
         } else {
             window = stand::Window::fromWkt(vm["window-wkt"].as<std::string>());
         }
+        window->requirePlotSize();
     } catch (const InputError& e) {
         throw InputError(std::string(vm.count("window") ? "--window: " : "--window-wkt: ") + e.what());
     }

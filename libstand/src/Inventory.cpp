@@ -55,6 +55,7 @@ std::vector<Plot> readPlots(const std::string& path) {
                 const double x1 = t.number(r, cBox[2]), y1 = t.number(r, cBox[3]);
                 plots.push_back({id, Window::rectangle(x0, y0, x1, y1)});
             }
+            plots.back().window.requirePlotSize();
         } catch (const InputError& e) {
             if (e.line() > 0) throw;  // already names file and line (a bad number)
             t.fail(r, "plot '" + id + "': " + e.what());

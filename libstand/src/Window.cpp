@@ -71,6 +71,11 @@ Window Window::rectangle(double xmin, double ymin, double xmax, double ymax) {
     return w;
 }
 
+void Window::requirePlotSize() const {
+    if (area_ >= 1 && area_ <= 1e10) return;
+    throw InputError("window of " + fmt(area_) + " m2 is outside [1, 1e10] m2 (coordinates in km, or in degrees?)");
+}
+
 Window Window::polygon(std::vector<Eigen::Vector2d> v) {
     for (const auto& p : v)
         if (!std::isfinite(p.x()) || !std::isfinite(p.y())) throw InputError("polygon window has a non-finite vertex");

@@ -85,6 +85,7 @@ TEST(InventoryReader, StemOutsideItsPlot) { expectBadStems("stems_outside_plot.c
 TEST(InventoryReader, DuplicateStemId) { expectBadStems("stems_duplicate_id.csv", 4, "duplicate stem id '1' (also on line 2)"); }
 TEST(InventoryReader, StemOfPlotWithoutWindow) { expectBadStems("stems_unknown_plot.csv", 3, "plot '3' has no window"); }
 TEST(InventoryReader, DegenerateWindow) { expectBadPlots("plots_degenerate.csv", 3, "degenerate window"); }
+TEST(InventoryReader, PlotOfAMicroSquareMetre) { expectBadPlots("plots_tiny.csv", 3, "window of 5e-09 m2 is outside [1, 1e10] m2"); }
 TEST(InventoryReader, DuplicatePlotId) { expectBadPlots("plots_duplicate_id.csv", 3, "duplicate plot id '1'"); }
 TEST(InventoryReader, SelfIntersectingWktWindow) { expectBadPlots("plots_self_intersecting.csv", 2, "intersects itself"); }
 TEST(InventoryReader, PlotsWithoutGeometry) { expectBadPlots("plots_no_geometry.csv", 1, "xmin,ymin,xmax,ymax or a WKT"); }

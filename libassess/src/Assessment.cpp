@@ -56,7 +56,9 @@ AssessmentResults runAssessment(const AssessmentOptions& options) {
             options.onNote("warning: " + campaign + " run " + std::to_string(r.run) + " (seed " + std::to_string(r.seed) +
                            ") stopped on a numerical error and is left out: " + r.failure);
     };
+    const std::size_t notesBefore = store.notes().size();
     runMissing(plan, store, bareScene, catalogues, runner);
+    for (std::size_t n = notesBefore; n < store.notes().size(); ++n) note(store.notes()[n]);
 
     BootstrapSettings bootstrap;
     bootstrap.replicates = options.bootstrapReplicates;

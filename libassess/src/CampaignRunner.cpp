@@ -70,8 +70,11 @@ void runMissing(const std::vector<Campaign>& plan, CampaignStore& store, std::sh
         slots[c].pending = static_cast<int>(missing.size());
         if (!plan[c].forested) {
             slots[c].scene = bareScene;
-        } else if (missing.empty() && !std::filesystem::exists(store.forestSummaryPath(plan[c]))) {
-            // All runs are stored but the forest's statistics were lost: only they are computed again.
+        } else if (missing.empty() && !forestSummaryIntact(store.forestSummaryPath(plan[c]))) {
+            // All runs are stored but the forest's statistics were lost, damaged or edited: only they
+            // are computed again (the forest is its seed's).
+            if (std::filesystem::exists(store.forestSummaryPath(plan[c])))
+                store.note(store.forestSummaryPath(plan[c]) + ": checksum mismatch (edited or damaged): computed again");
             const stand::Window extent = forestExtent(*bareScene);
             writeForestSummary(store.forestSummaryPath(plan[c]),
                                summariseForest(generate(plan[c], catalogues.at(plan[c].stand), extent), extent));

@@ -12,10 +12,16 @@ namespace sylva::assess {
 namespace {
 const char* const kDesignFile = "design.txt";
 
+// A folder holding only the design's temporary file is a campaign killed before its design was
+// written (nothing else is written before it): it starts afresh, under --resume or not.
 bool emptyOrAbsent(const std::string& dir) {
     if (!fs::exists(dir)) return true;
     if (!fs::is_directory(dir)) throw InputError("--out " + dir + ": exists and is not a directory");
-    return fs::is_empty(dir);
+    const fs::path unwritten = fs::path(dir) / (std::string(kDesignFile) + ".tmp");
+    for (const auto& entry : fs::directory_iterator(dir))
+        if (entry.path() != unwritten) return false;
+    fs::remove(unwritten);
+    return true;
 }
 
 void writeDesign(const std::string& path, const AssessmentDesign& design) {

@@ -4,7 +4,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
+#include "libassess/Hashing.hpp"
 #include "libstand/CsvTable.hpp"
 #include "libstand/InputError.hpp"
 
@@ -53,22 +55,40 @@ ForestSummary summariseForest(const stand::Forest& forest, const stand::Window& 
     return fromStatistics(stand::standStatistics(pattern).stand);
 }
 
+// The data row's checksum, as run lines carry one: a summary edited or damaged on disk is told
+// from the one the campaign computed.
+std::string rowChecksum(const std::string& row) { return toHex(fnv1a64(row), 16); }
+
 void writeForestSummary(const std::string& path, const ForestSummary& s) {
     const std::string tmp = path + ".tmp";
     {
         std::ofstream out(tmp, std::ios::trunc);
-        for (const char* c : kColumns) out << c << (c == kColumns[5] ? '\n' : ',');
+        for (const char* c : kColumns) out << c << ',';
+        out << "checksum\n";
         // NaN is written as "nan" and read back as NaN by strtod (an undefined Clark-Evans index).
-        out << s.stems << ',' << number(s.stemsPerHa) << ',' << number(s.basalAreaM2Ha) << ',' << number(s.meanDbhCm) << ','
-            << number(s.sdDbhCm) << ',' << number(s.clarkEvans) << '\n';
+        std::ostringstream row;
+        row << s.stems << ',' << number(s.stemsPerHa) << ',' << number(s.basalAreaM2Ha) << ',' << number(s.meanDbhCm) << ','
+            << number(s.sdDbhCm) << ',' << number(s.clarkEvans);
+        out << row.str() << ',' << rowChecksum(row.str()) << '\n';
         if (!out.flush()) throw InputError(tmp, 0, "cannot write");
     }
     std::filesystem::rename(tmp, path);
 }
 
+bool forestSummaryIntact(const std::string& path) {
+    std::ifstream in(path);
+    std::string header, row;
+    if (!std::getline(in, header) || !std::getline(in, row)) return false;
+    const auto comma = row.rfind(',');
+    return comma != std::string::npos && row.substr(comma + 1) == rowChecksum(row.substr(0, comma));
+}
+
 ForestSummary readForestSummary(const std::string& path) {
     const CsvTable t = CsvTable::read(path);
     if (t.rows() != 1) throw InputError(path, 0, "expected one row of forest statistics, found " + std::to_string(t.rows()));
+    if (!forestSummaryIntact(path))
+        throw InputError(path, 2, "checksum mismatch: the forest's statistics were edited or damaged (delete the file: "
+                                  "--resume computes them again)");
     std::vector<double> v;
     for (const char* c : kColumns) {
         const std::size_t col = t.require(c);

@@ -3,11 +3,15 @@
 // Small campaigns on a short slope, so each takes about a second.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <string>
+#include <vector>
 
 #include "libassess/Assessment.hpp"
+#include "libassess/ForestSummary.hpp"
 #include "libassess/Report.hpp"
 #include "libstand/InputError.hpp"
 
@@ -121,4 +125,44 @@ TEST_F(AssessResume, NonEmptyOutputWithoutResumeIsRefused) {
     EXPECT_EQ(slurp(root_ / "busy/notes.txt"), "someone's file\n");
 }
 
+// Issue 13: a forest summary edited on disk (Clark-Evans 0.5895 -> 0.5) went into results.json.
+// Its checksum now tells it from the campaign's: --resume computes it again (the forest is its
+// seed's) and the results are those of the untouched campaign.
+TEST_F(AssessResume, AnEditedForestSummaryIsComputedAgain) {
+    assess(options("whole", 2));
+    assess(options("edited", 2));
+    const fs::path summary = root_ / "edited/forests/GR1_A_001.csv";
+    std::string text = slurp(summary);
+    const auto lastComma = text.rfind(',', text.rfind(',') - 1);  // before clark_evans
+    text = text.substr(0, lastComma) + ",0.5" + text.substr(text.rfind(','));
+    spit(summary, text);
+    EXPECT_FALSE(forestSummaryIntact(summary.string()));
+    EXPECT_THROW(readForestSummary(summary.string()), sylva::InputError);
+    AssessmentOptions resume = options("edited", 2);
+    resume.resume = true;
+    std::vector<std::string> notes;
+    resume.onNote = [&notes](const std::string& n) { notes.push_back(n); };
+    EXPECT_EQ(assess(resume), 0);
+    EXPECT_EQ(slurp(root_ / "edited/results.json"), slurp(root_ / "whole/results.json"));
+    EXPECT_EQ(slurp(summary), slurp(root_ / "whole/forests/GR1_A_001.csv"));
+    EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const std::string& n) { return n.find("checksum mismatch") != std::string::npos; }));
+}
+
+// Issue 13: a kill while the design was being written left design.txt.tmp alone, which neither a
+// new campaign nor --resume accepted. Nothing else is written before the design: it starts afresh.
+TEST_F(AssessResume, AKillBeforeTheDesignWasWrittenStartsAfresh) {
+    assess(options("whole", 2));
+    for (const bool resume : {false, true}) {
+        const fs::path dir = root_ / (resume ? "killed-resume" : "killed-new");
+        fs::create_directories(dir);
+        spit(dir / "design.txt.tmp", "stands = GR1\nru");
+        AssessmentOptions o = options(dir.filename().string(), 2);
+        o.resume = resume;
+        EXPECT_EQ(assess(o), 6 + 2 * 2 * 4) << (resume ? "--resume" : "new");
+        EXPECT_EQ(slurp(dir / "results.json"), slurp(root_ / "whole/results.json"));
+        EXPECT_FALSE(fs::exists(dir / "design.txt.tmp"));
+    }
+}
+
 }  // namespace
+

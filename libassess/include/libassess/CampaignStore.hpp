@@ -27,6 +27,7 @@ public:
     const RunLog& log(std::size_t campaign) const { return *logs_.at(campaign); }
     std::string forestSummaryPath(const Campaign& campaign) const;
     const std::vector<std::string>& notes() const { return notes_; }
+    void note(std::string text) { notes_.push_back(std::move(text)); }
 
 private:
     std::string dir_;

@@ -23,9 +23,11 @@ ForestSummary summariseInventory(const stand::StandStatistics& statistics, bool 
 // A virtual forest's over the extent it was generated on (one window).
 ForestSummary summariseForest(const stand::Forest& forest, const stand::Window& extent);
 
-// One summary per small CSV file (header and one row), written beside and renamed into place so a
-// kill never leaves half a file. read throws InputError (file, line) on a damaged file.
+// One summary per small CSV file (header and one row with its checksum), written beside and renamed
+// into place so a kill never leaves half a file. read throws InputError (file, line) on a damaged or
+// edited file; intact tells whether the file exists with the row the campaign wrote.
 void writeForestSummary(const std::string& path, const ForestSummary& summary);
 ForestSummary readForestSummary(const std::string& path);
+bool forestSummaryIntact(const std::string& path);
 
 }  // namespace sylva::assess

@@ -112,9 +112,10 @@ void drawFigures(const std::string& dir, const stand::Inventory& inv, const stan
           "1 with lines dashtype 2 title 'Poisson'\n";
     if (inv.hasDiameters && !inv.stems.empty()) {
         gp << "$dbh << EOD\n";
-        for (const auto& s : inv.stems) gp << s.dbhCm << "\n";
+        for (const auto& s : inv.stems)
+            if (stand::measured(s)) gp << s.dbhCm << "\n";
         gp << "EOD\nset output '" << dir << "/dbh_histogram.svg'\nset title 'DBH distribution, " << inv.name
-           << " (" << inv.stems.size() << " stems)'\nset xlabel 'DBH (cm)'\nset ylabel 'stems'\nset style fill solid 0.5\n"
+           << " (" << std::count_if(inv.stems.begin(), inv.stems.end(), stand::measured) << " measured stems)'\nset xlabel 'DBH (cm)'\nset ylabel 'stems'\nset style fill solid 0.5\n"
               "bin(x) = 2.5 * floor(x / 2.5) + 1.25\n"
               "plot $dbh using (bin($1)):(1) smooth frequency with boxes title '2.5 cm classes'\n";
     }

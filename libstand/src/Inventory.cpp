@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <sstream>
 #include <tuple>
@@ -79,9 +80,31 @@ double Inventory::areaHa() const {
     return a / 1e4;
 }
 
+double readDbhCell(const CsvTable& t, std::size_t row, std::size_t column) {
+    const std::string& text = t.text(row, column);
+    if (text.empty() || text == "NA" || text == "nan" || text == "NaN") return std::nan("");
+    const double dbh = t.number(row, column);
+    if (dbh == 0) return 0;
+    if (const std::string why = dbhProblem(dbh); !why.empty()) t.fail(row, column, why);
+    return dbh;
+}
+
 std::vector<std::string> dataWarnings(const Inventory& inv, const std::string& stemsSource,
                                       const std::string& plotsSource) {
     std::vector<std::string> warnings;
+    std::size_t below = 0, unmeasured = 0;
+    long firstLine = 0;
+    for (const auto& s : inv.stems) {
+        if (measured(s)) continue;
+        (s.dbhCm == 0 ? below : unmeasured) += 1;
+        if (!firstLine) firstLine = s.line;
+    }
+    if (inv.hasDiameters && below + unmeasured > 0)
+        warnings.push_back(stemsSource + ": " + std::to_string(unmeasured) + " stem(s) without a DBH (NA or empty) and " +
+                           std::to_string(below) + " below breast height (DBH 0), first on line " +
+                           std::to_string(firstLine) + ": N, g(r) and Clark-Evans use all " +
+                           std::to_string(inv.stems.size()) + " stems; G and the DBH statistics the " +
+                           std::to_string(inv.stems.size() - below - unmeasured) + " measured ones");
     std::map<std::string, std::vector<const Stem*>> byPlot;
     for (const auto& s : inv.stems) byPlot[s.plot].push_back(&s);
     for (const auto& p : inv.plots) {
@@ -126,8 +149,7 @@ Inventory readInventory(const std::string& stemsCsv, const std::string& plotsCsv
         lineOfStem[s.id] = s.line;
         s.x = t.number(r, cX);
         s.y = t.number(r, cY);
-        s.dbhCm = t.number(r, cDbh);
-        if (const std::string why = dbhProblem(s.dbhCm); !why.empty()) t.fail(r, cDbh, why);
+        s.dbhCm = readDbhCell(t, r, cDbh);
         if (cSpecies) s.species = t.text(r, *cSpecies);
         if (cStool && !t.text(r, *cStool).empty()) s.stool = t.text(r, *cStool);
         const auto plot = plotById.find(s.plot);
@@ -139,6 +161,7 @@ Inventory readInventory(const std::string& stemsCsv, const std::string& plotsCsv
         inv.stems.push_back(std::move(s));
     }
 
+    inv.hasDiameters = std::any_of(inv.stems.begin(), inv.stems.end(), measured);
     inv.warnings = dataWarnings(inv, stemsCsv, plotsCsv);
     return inv;
 }

@@ -1,5 +1,6 @@
 #include "libstand/PointPattern.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -19,7 +20,6 @@ Inventory readPointPattern(const std::string& csv, const Window& window) {
     Inventory inv;
     inv.name = csv.substr(csv.find_last_of("/\\") + 1);
     inv.plots.push_back({"1", window});
-    inv.hasDiameters = cDbh.has_value();
     std::map<std::string, long> lineOfStem;
     for (std::size_t r = 0; r < t.rows(); ++r) {
         Stem s;
@@ -34,11 +34,7 @@ Inventory readPointPattern(const std::string& csv, const Window& window) {
         }
         s.x = t.number(r, cX);
         s.y = t.number(r, cY);
-        s.dbhCm = NAN;
-        if (cDbh) {
-            s.dbhCm = t.number(r, *cDbh);
-            if (s.dbhCm <= 0) t.fail(r, *cDbh, "diameter " + t.text(r, *cDbh) + " cm is not positive");
-        }
+        s.dbhCm = cDbh ? readDbhCell(t, r, *cDbh) : NAN;
         if (cStool && !t.text(r, *cStool).empty()) s.stool = t.text(r, *cStool);
         if (!window.contains({s.x, s.y})) {
             std::ostringstream os;
@@ -47,6 +43,7 @@ Inventory readPointPattern(const std::string& csv, const Window& window) {
         }
         inv.stems.push_back(std::move(s));
     }
+    inv.hasDiameters = std::any_of(inv.stems.begin(), inv.stems.end(), measured);
     inv.warnings = dataWarnings(inv, csv, "window");
     return inv;
 }

@@ -14,6 +14,13 @@ StandCatalogue::StandCatalogue(const Inventory& inventory, const std::string& st
     // does not depend on hash-table order.
     std::map<std::string, std::vector<const Stem*>> stemsOfStool;
     for (const Stem& s : inventory.stems) {
+        // Virtual forests are made of the stems a block meets: a stem below breast height is left
+        // out (the inventory's warnings count them); one whose DBH was not measured cannot be drawn.
+        if (s.dbhCm == 0) continue;
+        if (!measured(s))
+            throw InputError(stemsSource, s.line,
+                             "stem '" + s.id + "' has no DBH: virtual forests need every stem's diameter (give it, "
+                             "or 0 for a stem below breast height, which is left out)");
         const StemTemplate t{s.dbhCm, s.species};
         all_.push_back(t);
         maxDbhCm_ = std::max(maxDbhCm_, s.dbhCm);
@@ -42,6 +49,7 @@ StandCatalogue::StandCatalogue(const Inventory& inventory, const std::string& st
         stools_.push_back(std::move(stool));
     }
 
+    if (all_.empty()) throw InputError(stemsSource, 0, "every stem is below breast height (DBH 0): nothing to resample");
     const double areaHa = inventory.areaHa();
     stemsPerHa_ = static_cast<double>(all_.size()) / areaHa;
     stoolsPerHa_ = static_cast<double>(stools_.size()) / areaHa;

@@ -14,17 +14,20 @@ DendrometricStatistics dendrometrics(const std::vector<const Stem*>& stems, doub
     const double n = static_cast<double>(s.n);
     s.stemsPerHa = n / s.areaHa;
     if (hasDiameters) {
-        double basal = 0, sum = 0;
+        double basal = 0, sum = 0, count = 0;
         for (const Stem* t : stems) {
+            if (!measured(*t)) continue;  // below breast height or not measured (the warnings count them)
             basal += M_PI * (t->dbhCm / 200) * (t->dbhCm / 200);  // m², dbh in cm
             sum += t->dbhCm;
+            ++count;
         }
         s.basalAreaM2Ha = basal / s.areaHa;
-        if (s.n > 0) s.meanDbhCm = sum / n;
-        if (s.n > 1) {
+        if (count > 0) s.meanDbhCm = sum / count;
+        if (count > 1) {
             double ss = 0;
-            for (const Stem* t : stems) ss += (t->dbhCm - *s.meanDbhCm) * (t->dbhCm - *s.meanDbhCm);
-            s.sdDbhCm = std::sqrt(ss / (n - 1));
+            for (const Stem* t : stems)
+                if (measured(*t)) ss += (t->dbhCm - *s.meanDbhCm) * (t->dbhCm - *s.meanDbhCm);
+            s.sdDbhCm = std::sqrt(ss / (count - 1));
         }
     }
     std::set<std::string> stools;

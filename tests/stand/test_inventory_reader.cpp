@@ -7,6 +7,8 @@
 #include "libstand/InputError.hpp"
 #include "libstand/Inventory.hpp"
 #include "libstand/PointPattern.hpp"
+#include "libstand/StandCatalogue.hpp"
+#include "libstand/StandStatistics.hpp"
 
 using namespace sylva::stand;
 using sylva::InputError;
@@ -129,3 +131,33 @@ TEST(PointPatternReader, MissingCoordinateColumn) {
 }
 
 }  // namespace
+
+// Issue 13: real inventories have stems below breast height (DBH 0) and unmeasured ones (NA, empty;
+// spatstat's patterns exported from R). They are stems of the pattern; G and the DBH statistics
+// use the measured ones, and a warning counts what was left out and why.
+TEST(InventoryReader, UnmeasuredAndZeroDiametersAreKeptForThePattern) {
+    const Inventory inv = readInventory(data("stems_unmeasured_dbh.csv"), data("plots_ok.csv"));
+    ASSERT_EQ(inv.stems.size(), 5u);
+    EXPECT_TRUE(inv.hasDiameters);
+    EXPECT_EQ(inv.stems[1].dbhCm, 0);
+    EXPECT_TRUE(std::isnan(inv.stems[2].dbhCm));
+    EXPECT_TRUE(std::isnan(inv.stems[3].dbhCm));
+    ASSERT_EQ(inv.warnings.size(), 2u);  // and plots_ok's plot 2, left empty here
+    EXPECT_NE(inv.warnings[0].find("2 stem(s) without a DBH (NA or empty) and 1 below breast height (DBH 0), first on line 3"),
+              std::string::npos) << inv.warnings[0];
+    const StandStatistics st = standStatistics(inv);
+    EXPECT_EQ(st.stand.n, 5u);  // every stem counts in N (plots_ok: 400 + 100 m2)
+    EXPECT_NEAR(st.stand.stemsPerHa, 5 / 0.05, 1e-9);
+    // G from the 20 and 40 cm stems only: pi (0.1^2 + 0.2^2) m2 over 0.05 ha.
+    EXPECT_NEAR(*st.stand.basalAreaM2Ha, M_PI * (0.01 + 0.04) / 0.05, 1e-9);
+    EXPECT_NEAR(*st.stand.meanDbhCm, 30, 1e-12);
+    EXPECT_NEAR(*st.stand.sdDbhCm, std::sqrt(200.0), 1e-12);
+}
+
+TEST(InventoryReader, VirtualForestsNeedEveryStemsDiameter) {
+    const Inventory inv = readInventory(data("stems_unmeasured_dbh.csv"), data("plots_ok.csv"));
+    const Failure f = failureOf([&] { StandCatalogue(inv, data("stems_unmeasured_dbh.csv")); });
+    EXPECT_EQ(f.line, 4) << f.message;  // the first NA; the DBH 0 stem on line 3 is simply left out
+    EXPECT_NE(f.message.find("stem '3' has no DBH"), std::string::npos) << f.message;
+}
+

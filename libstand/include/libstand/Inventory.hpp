@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "libstand/CsvTable.hpp"
 #include "libstand/Window.hpp"
 
 namespace sylva::stand {
@@ -12,7 +13,7 @@ struct Stem {
     std::string plot;
     std::string id;
     double x = 0, y = 0;   // m, in the plot's frame
-    double dbhCm = 0;      // diameter at breast height (1.3 m)
+    double dbhCm = 0;      // diameter at breast height (1.3 m); 0 below breast height, NaN not measured
     std::string species;   // may be empty
     std::optional<std::string> stool;  // coppice stool id; empty for a single tree
     long line = 0;         // line in the stems file, for messages
@@ -28,10 +29,18 @@ struct Inventory {
     std::vector<Plot> plots;
     std::vector<Stem> stems;
     std::vector<std::string> warnings;  // valid but noteworthy data (stems at identical positions, empty plots)
-    bool hasDiameters = true;           // false for a point pattern without dbh_cm (then every dbhCm is NaN)
+    bool hasDiameters = true;           // some stem has a measured DBH (false: a pattern without dbh_cm)
 
     double areaHa() const;
 };
+
+// A stem whose DBH was measured (> 0): the only ones G and the DBH statistics use. Stems below
+// breast height (DBH 0) and unmeasured ones (NA, empty) still count in N, g(r) and Clark-Evans.
+inline bool measured(const Stem& s) { return s.dbhCm > 0; }
+
+// The DBH cell of a stems file: a diameter in (0, 200] cm; "NA", "nan" or empty: not measured (NaN);
+// 0: a stem below breast height. Throws InputError (file, line) for anything else.
+double readDbhCell(const CsvTable& table, std::size_t row, std::size_t column);
 
 // Reads `plot,stem,x,y,dbh_cm,species,stool` stems and a plots file with either
 // `plot,xmin,ymin,xmax,ymax` or `plot,wkt` (a WKT POLYGON per plot). Throws InputError naming the
@@ -40,7 +49,7 @@ struct Inventory {
 Inventory readInventory(const std::string& stemsCsv, const std::string& plotsCsv);
 
 // Valid but noteworthy data, one message each: stems at identical positions (their nearest-neighbour
-// distance is 0, as in spatstat) and plots without any stem. readInventory fills Inventory::warnings with it.
+// distance is 0, as in spatstat), plots without any stem, and stems without a measured DBH (counted). readInventory fills Inventory::warnings with it.
 std::vector<std::string> dataWarnings(const Inventory& inv, const std::string& stemsSource,
                                       const std::string& plotsSource);
 

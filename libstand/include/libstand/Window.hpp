@@ -15,9 +15,6 @@ double signedArea(const std::vector<Eigen::Vector2d>& ring);
 class Window {
 public:
     // Throws InputError if xmax <= xmin or ymax <= ymin (a degenerate window).
-    // Throws InputError unless the window could be a field plot or a stand: area in [1 m2, 1e10 m2]
-    // (a 1e-9 m wide plot gave N = 3e22 stems/ha; coordinates in km give such windows).
-    void requirePlotSize() const;
     static Window rectangle(double xmin, double ymin, double xmax, double ymax);
     // A simple polygon (outer ring; orientation is normalised to counter-clockwise; a closing
     // vertex equal to the first is dropped). Throws InputError if it has fewer than 3 distinct
@@ -38,6 +35,9 @@ public:
     // Distance from p (inside) to the nearest point of the boundary.
     double distanceToBoundary(const Eigen::Vector2d& p) const;
     std::string describe() const;  // "rectangle [0,50]x[0,50]" or "polygon of 7 vertices"
+    // Throws InputError unless the window could be a field plot or a stand: area in [1 m2, 1e10 m2]
+    // (a 1e-9 m wide plot gave N = 3e22 stems/ha; coordinates in km give such windows).
+    void requirePlotSize() const;
 
 private:
     Window() = default;

@@ -137,7 +137,15 @@ GeneratedForest generateForest(const StandCatalogue& stand, const Window& extent
     const std::unique_ptr<gsl_rng, decltype(&gsl_rng_free)> rng(gsl_rng_alloc(gsl_rng_mt19937), &gsl_rng_free);
     gsl_rng_set(rng.get(), settings.seed);
 
-    const auto stems = static_cast<std::size_t>(std::llround(stand.stemsPerHa() * extent.area() / 1e4));
+    // Checked before anything is drawn: an extent typed in mm (or to 1e308) would exhaust memory.
+    const double expected = stand.stemsPerHa() * extent.area() / 1e4;
+    if (!(expected <= kMaxGeneratedStems)) {
+        std::ostringstream what;
+        what << "an extent of " << extent.area() / 1e4 << " ha at " << stand.stemsPerHa() << " stems/ha would hold "
+             << expected << " stems, above the " << kMaxGeneratedStems << " a forest may have (coordinates in mm?)";
+        throw InputError(what.str());
+    }
+    const auto stems = static_cast<std::size_t>(std::llround(expected));
     ForestBuilder builder(stand, extent, settings, rng.get());
     if (stems == 0) builder.warn("the extent is too small for a single stem at " + std::to_string(stand.stemsPerHa()) + " stems/ha");
 

@@ -225,6 +225,19 @@ TEST(ForestGenerator, NoStemOverlapsAnotherInADenseStand) {
     expectNoOverlapInside(a.forest, 0, 0, 100, 80);
 }
 
+// Issue 13: an extent to 1e308 (or in mm) ran out of memory; it is refused before anything is drawn.
+TEST(ForestGenerator, AnExtentTooLargeForAnyForestIsRefusedAtOnce) {
+    const StandCatalogue small(smallStand(), "small.csv");
+    for (const double side : {1e308, 1e6}) {  // 1e6 m square: 1e8 ha
+        try {
+            generateForest(small, Window::rectangle(0, 0, side, side), settingsFor(ForestStructure::Random, 1));
+            FAIL() << side << " m accepted";
+        } catch (const sylva::InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("above the 2e+07 a forest may have"), std::string::npos) << e.what();
+        }
+    }
+}
+
 TEST(ForestGenerator, TrimsTheLastStoolSoThatNIsExact) {
     // 20 m x 22 m = 0.044 ha: N = 250 * 0.044 = 11 stems, of which round(5.5) = 6 in stools. Whole
     // stools have 3 or 2 stems, so the last one is cut (to 1 stem: then it is a single tree).

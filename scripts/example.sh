@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The main job on the shipped example data: a stand's statistics, a virtual forest from it, and
-# 100 block runs down the stand-in slope without forest. Results land in out/.
+# The main job on the shipped example data: a stand's statistics, a virtual forest from it, 100 block
+# runs down the stand-in slope without forest, and the mission's answer: the protection index PF50
+# of two stands, aggregated and not, with intervals and a ranking. Results land in out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 exe=${1:-build/apps/sylvarock}
@@ -13,3 +14,8 @@ echo "== A virtual aggregated forest over the forested part of the slope (out/GR
   --extent 130,0,630,200 --seed 1 --out out/GR1-A.csv
 echo "== 100 blocks down the stand-in slope without forest (out/no-forest/)"
 "$exe" simulate --scene data/scenes/no-forest.ini --runs 100 --seed 1 --out out/no-forest
+echo "== PF50 of stands GR1 and PY1, aggregated (A) and random (NA): a small campaign, ~2.5 min on 2 cores (out/assess/)"
+echo "   (15 runs x 2 forests per stand and structure: wide intervals; the paper's design is --runs 100 --realisations 5)"
+# --resume: a second run of this script finishes or reuses the campaign instead of refusing out/assess.
+"$exe" assess --stand data/stands/GR1 --stand data/stands/PY1 --scene data/scenes/no-forest.ini \
+  --runs 15 --realisations 2 --baseline-runs 200 --seed 1 --resume --out out/assess

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <unordered_map>
 #include <limits>
 
 #include "libstand/EdgeCorrection.hpp"
@@ -34,9 +36,14 @@ PairCorrelation pairCorrelation(const std::vector<Eigen::Vector2d>& points, cons
     d.reserve(pairs.size());
     wTrans.reserve(pairs.size());
     wIso.reserve(pairs.size());
+    // The pairs are listed both ways, and |W ∩ (W + v)| = |W ∩ (W - v)|: one set covariance per pair.
+    std::unordered_map<std::uint64_t, double> translationOfPair;
     for (const auto& p : pairs) {
         d.push_back(p.distance);
-        wTrans.push_back(translation.weight(points[p.j] - points[p.i]));
+        const std::uint64_t key = std::min(p.i, p.j) * points.size() + std::max(p.i, p.j);
+        const auto [it, fresh] = translationOfPair.try_emplace(key, 0.0);
+        if (fresh) it->second = translation.weight(points[p.j] - points[p.i]);
+        wTrans.push_back(it->second);
         wIso.push_back(isotropicWeight(window, points[p.i], p.distance));
     }
     const auto smooth = [&](const std::vector<double>& w) {

@@ -3,6 +3,7 @@
 // a pair of points near the boundary has partners outside W that were not observed, so it is
 // up-weighted. Both weights follow spatstat (edge.Trans, edge.Ripley), including its cap of 100.
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <vector>
 
 #include "libstand/Window.hpp"
@@ -20,6 +21,7 @@ public:
 private:
     Window window_;
     std::vector<std::vector<Eigen::Vector2d>> convexParts_;  // convex partition of a polygonal window
+    std::vector<Eigen::AlignedBox2d> partBoxes_;             // their bounding boxes
 };
 
 // Fraction of the circle of radius r about c (c inside W) whose circumference lies inside W.

@@ -72,8 +72,8 @@ void writeSoilContact(const std::string& path, const dem::Scene& scene) {
     const dem::SoilContact law(p, scene.blockTemplate().mass());  // the block/soil law simulate builds (Scene)
     std::ofstream out(path);
     out << std::setprecision(12) << "kn_n_m,kt_n_m,damping_n_s,friction_deg,normal_force_floored,gravity_m_s2\n"
-        << p.kn << ',' << p.kappa * p.kn << ',' << law.dampingCoefficient() << ',' << p.frictionDeg << ','
-        << (p.dashpotPulls ? 0 : 1) << ',' << scene.config().gravity << '\n';  // Eqs. 14-19
+        << p.kn << ',' << law.tangentialStiffness() << ',' << law.dampingCoefficient() << ',' << p.frictionDeg << ','
+        << (p.dashpotPulls ? 0 : 1) << ',' << scene.config().gravity << '\n';
     if (!out) throw InputError(path, 0, "write failed (disk full?)");
 }
 

@@ -37,12 +37,6 @@ std::string lower(std::string s) {
     return s;
 }
 
-std::string number(double v) {
-    std::ostringstream os;
-    os << v;
-    return os.str();
-}
-
 struct HeaderValue {
     double value;
     long line;
@@ -129,7 +123,7 @@ ElevationGrid ElevationGrid::readAsc(const std::string& path) {
             // kilometre cells no rockfall DTM has.
             if (!(g.cell_ >= 0.01 && g.cell_ <= 1000))
                 throw InputError(path, header.find("cellsize")->line,
-                                 "cellsize " + number(g.cell_) + " is outside [0.01, 1000] m (a DTM in "
+                                 "cellsize " + readableNumber(g.cell_) + " is outside [0.01, 1000] m (a DTM in "
                                  "geographic degrees? reproject it to metres)");
             g.ncols_ = header.count("ncols", lineNo);
             g.nrows_ = header.count("nrows", lineNo);
@@ -140,7 +134,7 @@ ElevationGrid ElevationGrid::readAsc(const std::string& path) {
                 const double first = axis == "x" ? g.x0_ : g.y0_;
                 if (std::abs(first) <= 1e8) continue;
                 const auto given = header.find(axis + "llcorner") ? header.find(axis + "llcorner") : header.find(axis + "llcenter");
-                throw InputError(path, given->line, axis + "ll corner or centre " + number(first) +
+                throw InputError(path, given->line, axis + "ll corner or centre " + readableNumber(first) +
                                                         " is beyond 1e8 m: not a projected map coordinate");
             }
             if (const auto nd = header.find("nodata_value")) nodata = nd->value;

@@ -49,18 +49,12 @@ bool segmentsIntersect(const Vec& a, const Vec& b, const Vec& c, const Vec& d, d
            (o4 == 0 && onSegment(b, c, d));
 }
 
-std::string fmt(double v) {
-    std::ostringstream os;
-    os << v;
-    return os.str();
-}
-
 }  // namespace
 
 Window Window::rectangle(double xmin, double ymin, double xmax, double ymax) {
     if (!(xmax > xmin) || !(ymax > ymin))
-        throw InputError("degenerate window: xmin,ymin,xmax,ymax = " + fmt(xmin) + "," + fmt(ymin) + "," + fmt(xmax) +
-                         "," + fmt(ymax) + " (need xmax > xmin and ymax > ymin)");
+        throw InputError("degenerate window: xmin,ymin,xmax,ymax = " + readableNumber(xmin) + "," + readableNumber(ymin) +
+                         "," + readableNumber(xmax) + "," + readableNumber(ymax) + " (need xmax > xmin and ymax > ymin)");
     Window w;
     w.rectangle_ = true;
     w.lo_ = {xmin, ymin};
@@ -73,7 +67,7 @@ Window Window::rectangle(double xmin, double ymin, double xmax, double ymax) {
 
 void Window::requirePlotSize() const {
     if (area_ >= 1 && area_ <= 1e10) return;
-    throw InputError("window of " + fmt(area_) + " m2 is outside [1, 1e10] m2 (coordinates in km, or in degrees?)");
+    throw InputError("window of " + readableNumber(area_) + " m2 is outside [1, 1e10] m2 (coordinates in km, or in degrees?)");
 }
 
 Window Window::polygon(std::vector<Eigen::Vector2d> v) {
@@ -193,7 +187,7 @@ double Window::distanceToBoundary(const Eigen::Vector2d& p) const {
 
 std::string Window::describe() const {
     if (rectangle_)
-        return "rectangle [" + fmt(lo_.x()) + "," + fmt(hi_.x()) + "]x[" + fmt(lo_.y()) + "," + fmt(hi_.y()) + "]";
+        return "rectangle [" + readableNumber(lo_.x()) + "," + readableNumber(hi_.x()) + "]x[" + readableNumber(lo_.y()) + "," + readableNumber(hi_.y()) + "]";
     return "polygon of " + std::to_string(vertices_.size()) + " vertices";
 }
 

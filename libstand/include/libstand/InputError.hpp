@@ -1,6 +1,7 @@
 #pragma once
 // An error in something a user gave us (a file, an option, a scene key). It names where the
 // problem is, so the CLI can print "FILE:LINE: what" and exit non-zero instead of crashing.
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -23,5 +24,12 @@ private:
     std::string file_;
     long line_;
 };
+
+// A number as a message shows it: the shortest readable form (0.7, 1e+308), not to_string's 0.700000.
+inline std::string readableNumber(double v) {
+    std::ostringstream os;
+    os << v;
+    return os.str();
+}
 
 }  // namespace sylva

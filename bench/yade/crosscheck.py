@@ -18,6 +18,7 @@ import csv
 import json
 import math
 import os
+import random
 import shutil
 import statistics
 import subprocess
@@ -46,7 +47,6 @@ def ks_two_sample(a, b):
 
 def median_difference_interval(a, b, replicates=2000, confidence=0.95, seed=17):
     """Percentile bootstrap interval of median(b) - median(a): what the runs can resolve."""
-    import random
     rng = random.Random(seed)
     diffs = sorted(statistics.median(rng.choices(b, k=len(b))) - statistics.median(rng.choices(a, k=len(a)))
                    for _ in range(replicates))

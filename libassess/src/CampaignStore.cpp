@@ -12,16 +12,20 @@ namespace sylva::assess {
 namespace {
 const char* const kDesignFile = "design.txt";
 
-// A folder holding only the design's temporary file is a campaign killed before its design was
-// written (nothing else is written before it): it starts afresh, under --resume or not.
 bool emptyOrAbsent(const std::string& dir) {
     if (!fs::exists(dir)) return true;
     if (!fs::is_directory(dir)) throw InputError("--out " + dir + ": exists and is not a directory");
+    return fs::is_empty(dir);
+}
+
+// A folder holding only the design's temporary file is a campaign killed before its design was
+// written (nothing else is written before it): the file goes, and the campaign starts afresh.
+void dropUnwrittenDesign(const std::string& dir) {
     const fs::path unwritten = fs::path(dir) / (std::string(kDesignFile) + ".tmp");
+    if (!fs::is_directory(dir) || !fs::exists(unwritten)) return;
     for (const auto& entry : fs::directory_iterator(dir))
-        if (entry.path() != unwritten) return false;
+        if (entry.path() != unwritten) return;
     fs::remove(unwritten);
-    return true;
 }
 
 void writeDesign(const std::string& path, const AssessmentDesign& design) {
@@ -36,6 +40,7 @@ void writeDesign(const std::string& path, const AssessmentDesign& design) {
 CampaignStore::CampaignStore(std::string dir, const AssessmentDesign& design, const std::vector<Campaign>& plan, bool resume)
     : dir_(std::move(dir)) {
     const std::string designPath = dir_ + "/" + kDesignFile;
+    dropUnwrittenDesign(dir_);
     if (emptyOrAbsent(dir_)) {
         if (resume) notes_.push_back(dir_ + " holds no campaign yet: starting a new one");
         fs::create_directories(dir_);

@@ -17,7 +17,7 @@ stand::Forest singleTree(const SingleTreeConfig& t) {
     tree.heightM = stand::treeHeightM(t.dbhCm);
     tree.crownLengthM = stand::crownLengthM(tree.heightM);
     tree.crownMassKg = stand::crownMassKg(t.dbhCm);
-    return stand::Forest{{tree}};
+    return stand::Forest{{tree}, {}};  // no source file: a tree of the scene's keys
 }
 
 stand::Forest chooseForest(const SceneConfig& c, stand::Forest given) {

@@ -89,7 +89,7 @@ private:
 struct SceneKeys {
     SceneConfig c;
     std::string shape = "cube", orientation = "random", reading = "isotropic";
-    double restitution = -1;
+    double restitution = 0;  // used only when soil.restitution is given
     KeyTable table;
 
     SceneKeys();

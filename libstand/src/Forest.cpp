@@ -56,7 +56,7 @@ Forest readForestCsv(const std::string& path) {
     forest.source = path;
     forest.trees.reserve(t.rows());
     std::unordered_map<long, long> lineOfStem;
-    std::map<std::pair<long long, long long>, long> lineAt;  // position to the mm -> line
+    std::map<std::pair<long long, long long>, long> lineAt;  // position rounded to the mm -> line
     for (std::size_t r = 0; r < t.rows(); ++r) {
         Tree tree;
         tree.line = t.lineOf(r);
@@ -71,7 +71,7 @@ Forest readForestCsv(const std::string& path) {
         const auto cell = std::make_pair(std::llround(tree.x * 1e3), std::llround(tree.y * 1e3));
         if (const auto [it, fresh] = lineAt.emplace(cell, t.lineOf(r)); !fresh)
             t.fail(r, "stem at (" + t.text(r, cx) + ", " + t.text(r, cy) + ") stands where the stem of line " +
-                          std::to_string(it->second) + " stands (within 1 mm): a repeated line?");
+                          std::to_string(it->second) + " stands (to the millimetre): a repeated line?");
         if (cSpecies) tree.species = t.text(r, *cSpecies);
         if (cStool && !t.text(r, *cStool).empty()) tree.stool = t.integer(r, *cStool);
 

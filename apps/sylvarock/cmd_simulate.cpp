@@ -45,6 +45,7 @@ int runSimulate(int argc, const char* const* argv) {
     std::vector<std::string> sets;
     o.add_options()
         ("scene", po::value<std::string>(), "scene INI file (terrain, block, contact laws, release, stop); defaults are the paper's Table 2")
+        ("model", po::value<std::string>()->default_value("dem"), "dem (the paper's discrete element model) | lumped (its lumped-mass model after Rockyfor3D, thousands of runs per second; docs/lumped.md)")
         ("runs", po::value<int>(), "number of block runs (default 100; 1 for a single-tree launch)")
         ("seed", po::value<Seed>()->default_value(Seed{}, "1"), "campaign seed; run i uses a seed derived from (seed, i)")
         ("threads", po::value<int>()->default_value(0), "worker threads (0: all cores); results do not depend on it")
@@ -59,7 +60,8 @@ int runSimulate(int argc, const char* const* argv) {
     if (!parse(argc, argv, o, vm, "sylvarock simulate --scene FILE.ini --runs N --seed S --out DIR [options]",
                "  sylvarock simulate --scene data/scenes/no-forest.ini --runs 100 --seed 1 --out out/no-forest\n"
                "  sylvarock simulate --scene data/scenes/no-forest.ini --runs 4 --trajectory --block sphere --out out/t\n"
-               "  sylvarock simulate --scene data/scenes/no-forest.ini --set soil.friction_deg=35 --out out/phi35\n"))
+               "  sylvarock simulate --scene data/scenes/no-forest.ini --set soil.friction_deg=35 --out out/phi35\n"
+               "  sylvarock simulate --scene data/scenes/no-forest.ini --model lumped --runs 60000 --out out/lumped\n"))
         return 0;
     if (vm["help-scene"].as<bool>()) {
         std::cout << dem::describeSceneKeys() << "\n";
@@ -84,6 +86,9 @@ int runSimulate(int argc, const char* const* argv) {
 
     dem::CampaignOptions c;
     c.runs = runs > 0 ? runs : (scene.config().launch.enabled ? 1 : 100);
+    c.model = dem::parseModel(vm["model"].as<std::string>());
+    if (c.model == dem::Model::Lumped && scene.config().launch.enabled)
+        throw InputError("--model lumped follows blocks down a slope; a single-tree launch (block.speed_m_s) needs the DEM");
     c.seed = vm["seed"].as<Seed>().value;
     c.threads = threadCount(vm);
     c.run.recordTrajectory = vm["trajectory"].as<bool>();

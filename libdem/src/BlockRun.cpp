@@ -1,12 +1,12 @@
 #include "libdem/BlockRun.hpp"
 
-#include <gsl/gsl_rng.h>
 #include <time.h>
 
 #include <algorithm>
 #include <cmath>
 
 #include "libdem/BlockMotion.hpp"
+#include "libdem/RunRandom.hpp"
 #include "libstand/InputError.hpp"
 
 namespace sylva::dem {
@@ -21,22 +21,13 @@ std::string toString(StopReason r) {
     return "?";
 }
 
-namespace {
-
 double threadCpuSeconds() {
     timespec ts{};
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
     return ts.tv_sec + 1e-9 * ts.tv_nsec;
 }
 
-struct Rng {
-    explicit Rng(std::uint64_t seed) : r(gsl_rng_alloc(gsl_rng_mt19937)) { gsl_rng_set(r, static_cast<unsigned long>(seed)); }
-    ~Rng() { gsl_rng_free(r); }
-    Rng(const Rng&) = delete;
-    Rng& operator=(const Rng&) = delete;
-    double uniform(double a, double b) { return a + (b - a) * gsl_rng_uniform(r); }
-    gsl_rng* r;
-};
+namespace {
 
 TrajectorySample sample(const RigidBody& b, double t) {
     const double et = 0.5 * b.mass() * b.velocity.squaredNorm();
@@ -68,7 +59,7 @@ private:
 }  // namespace
 
 Release drawRelease(const Scene& scene, std::uint64_t seed) {
-    Rng rng(seed);
+    RunRandom rng(seed);
     const auto& cfg = scene.config();
     const auto& rel = cfg.release;
     Quat q = Quat::Identity();

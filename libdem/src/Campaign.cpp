@@ -5,7 +5,9 @@
 #include <mutex>
 #include <thread>
 
+#include "libdem/LumpedRun.hpp"
 #include "libdem/SimulationError.hpp"
+#include "libstand/InputError.hpp"
 
 namespace sylva::dem {
 
@@ -20,6 +22,14 @@ std::uint64_t runSeed(std::uint64_t campaignSeed, int run) {
     // gsl's mt19937 takes an unsigned long seed; keep it in 32 bits so it means the same everywhere.
     return splitmix64(splitmix64(campaignSeed) ^ static_cast<std::uint64_t>(run)) & 0xFFFFFFFFULL;
 }
+
+Model parseModel(const std::string& name) {
+    if (name == "dem") return Model::Dem;
+    if (name == "lumped") return Model::Lumped;
+    throw InputError("model '" + name + "': expected dem (the discrete element model) or lumped (the lumped-mass model, docs/lumped.md)");
+}
+
+std::string toString(Model m) { return m == Model::Dem ? "dem" : "lumped"; }
 
 std::vector<RunResult> runCampaign(const Scene& scene, const CampaignOptions& options) {
     std::vector<int> indices = options.only;
@@ -41,7 +51,9 @@ std::vector<RunResult> runCampaign(const Scene& scene, const CampaignOptions& op
                 if (failure) return;
             }
             try {
-                RunResult r = simulateBlock(scene, i, runSeed(options.seed, i), options.run);
+                const std::uint64_t seed = runSeed(options.seed, i);
+                RunResult r = options.model == Model::Dem ? simulateBlock(scene, i, seed, options.run)
+                                                          : simulateLumped(scene, i, seed, options.run);
                 std::lock_guard<std::mutex> lock(mutex);
                 results[slot] = std::move(r);
                 ++done;

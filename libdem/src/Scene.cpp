@@ -58,4 +58,10 @@ Scene::Scene(SceneConfig config, stand::Forest forest)
     }
 }
 
+Scene Scene::withLumped(const LumpedParams& params) const {
+    Scene s(*this);
+    s.config_.lumped = params;
+    return s;
+}
+
 }  // namespace sylva::dem

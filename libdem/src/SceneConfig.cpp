@@ -182,6 +182,16 @@ SceneKeys::SceneKeys() {
     k.number("forest.wake_margin_m", act.wakeMargin, closed(0, 100, "m"), "a stem is built when the block comes this close");
     k.number("forest.sleep_after_s", act.sleepAfter, aboveUpTo(0, 3600, "s"), "a stem sleeps after this long without the block");
     k.other("forest.all_awake", act.allAwake, "reference mode: every stem awake from the start");
+    auto& lm = c.lumped;
+    const Range obstacle = closed(0, 10, "m", "", "cm typed as m?");
+    k.other("lumped.soil_type", lm.soilType, "lumped model (--model lumped): Rockyfor3D soil type 0-7 setting R_n (Table 1: 4, talus slope; docs/lumped.md)");
+    k.number("lumped.rg70_m", lm.rg70, obstacle, "mean obstacle height met by 70 % of the rebounds (Table 1: 0.04)");
+    k.number("lumped.rg20_m", lm.rg20, obstacle, "... by 20 %");
+    k.number("lumped.rg10_m", lm.rg10, obstacle, "... by 10 %");
+    k.number("lumped.slope_baseline_m", lm.slopeBaseline, aboveUpTo(0.01, 100, "m"), "finite-difference baseline of the slope under a rebound (below the terrain resolution: the facet's own normal)");
+    k.number("lumped.deviation_sd_deg", lm.deviationSdDeg, closed(0, 90, "deg"), "random turn of the direction at a rebound (standard deviation)");
+    k.number("lumped.stop_speed_m_s", lm.stopSpeed, aboveUpTo(0, 10, "m/s"), "a block slower than this has stopped");
+    k.number("lumped.tree_energy_scale", lm.treeEnergyScale, closed(0, 100, ""), "scales the energy a tree takes (1: Dorren & Berger 2006)");
     k.number("gravity_m_s2", c.gravity, aboveUpTo(0, 100, "m/s^2"), "");
     k.number("output.trajectory_interval_s", c.trajectoryInterval, aboveUpTo(0, 3600, "s"), "trajectory sampling");
 }
@@ -284,6 +294,8 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
     if (c.block.shape == BlockShapeKind::Cube && vm.count("block.d1_m")) c.block.volumeM3 = c.block.d1 * c.block.d1 * c.block.d1;
     if (c.integration.anticipatedContacts < 1 || c.integration.anticipatedContacts > 1000)
         throw InputError("integration.anticipated_contacts = " + text(c.integration.anticipatedContacts) + ": outside [1, 1000]");
+    if (c.lumped.soilType < 0 || c.lumped.soilType > 7)
+        throw InputError("lumped.soil_type = " + text(c.lumped.soilType) + ": Rockyfor3D soil types are 0 to 7 (docs/lumped.md)");
     // Terrain paths are relative to the scene file.
     if (path) {
         const auto dir = std::filesystem::path(*path).parent_path();

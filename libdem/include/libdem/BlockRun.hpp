@@ -81,6 +81,8 @@ Release drawRelease(const Scene& scene, std::uint64_t seed);
 // whichever thread runs it. Throws SimulationError on NaN, energy growth or an unstable forced step,
 // InputError on an impossible release (outside the terrain, inside the soil).
 RunResult simulateBlock(const Scene& scene, int run, std::uint64_t seed, const RunOptions& options = {});
+// CPU time of the calling thread, s (what RunResult::cpuSeconds measures).
+double threadCpuSeconds();
 // The record of a run that stopped on a SimulationError: its release, no run-out (NaN), the message.
 RunResult failedRun(const Scene& scene, int run, std::uint64_t seed, const std::string& why);
 

@@ -3,6 +3,7 @@
 // (campaign seed, i) alone, so results do not depend on the number of threads or their timing.
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "libdem/BlockRun.hpp"
@@ -15,7 +16,13 @@ std::uint64_t splitmix64(std::uint64_t x);
 
 std::uint64_t runSeed(std::uint64_t campaignSeed, int run);
 
+// The DEM of the paper's Sect. 2.1-2.2, or its lumped-mass model of Sect. 2.3.1 (LumpedRun).
+enum class Model { Dem, Lumped };
+Model parseModel(const std::string& name);  // "dem" | "lumped"; InputError otherwise
+std::string toString(Model m);
+
 struct CampaignOptions {
+    Model model = Model::Dem;
     int runs = 100;
     // If not empty, run only these run indices (each still seeded from (seed, index)), e.g. the
     // runs an interrupted campaign had not finished; results come back in this order.

@@ -23,6 +23,8 @@ public:
     const stand::Forest& forest() const { return forest_; }
     bool forested() const { return !forest_.trees.empty(); }
     const TreeField& trees() const { return trees_; }
+    // The same scene with other lumped-model parameters (the soil bed is shared, not rebuilt).
+    Scene withLumped(const LumpedParams& params) const;
 
 private:
     SceneConfig config_;

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "libdem/BlockShape.hpp"
+#include "libdem/LumpedParams.hpp"
 #include "libdem/SoilContact.hpp"
 #include "libdem/StemContact.hpp"
 #include "libdem/StemParams.hpp"
@@ -82,6 +83,7 @@ struct SceneConfig {
     SingleTreeConfig tree;
     IntegrationConfig integration;
     StopConfig stop;
+    LumpedParams lumped;        // the lumped-mass model's soil and trees ([lumped])
     double gravity = 9.81;
     double trajectoryInterval = 0.05;  // s between trajectory samples
 };

@@ -1,0 +1,128 @@
+// sylvarock calibrate-lumped: fit the lumped model's roughness on the DEM's run-out without forest,
+// as the paper calibrated Rockyfor3D (Sect. 2.3.2, Table 1), and store it in the scene's [lumped].
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "Cli.hpp"
+#include "ProgressBar.hpp"
+#include "libdem/Campaign.hpp"
+#include "libdem/LumpedCalibration.hpp"
+#include "libstand/CsvTable.hpp"
+#include "libstand/InputError.hpp"
+
+namespace sylva::cli {
+namespace {
+
+// The run-outs of a `simulate` runs.csv, failed runs left out.
+std::vector<double> readRunouts(const std::string& path) {
+    const auto t = CsvTable::read(path);
+    const std::size_t runout = t.require("runout_m"), reason = t.require("stop_reason");
+    std::vector<double> out;
+    for (std::size_t i = 0; i < t.rows(); ++i)
+        if (t.text(i, reason) != "failed") out.push_back(t.number(i, runout));
+    if (out.size() < 100)
+        throw InputError(path, 0, std::to_string(out.size()) + " finished runs: a Dist50 to calibrate on needs at least 100 (the paper used 3 000)");
+    return out;
+}
+
+// The scene file with its [lumped] section replaced by `section` (appended if it had none).
+void rewriteLumpedSection(const std::string& path, const std::string& section) {
+    std::ifstream in(path);
+    if (!in) throw InputError(path, 0, "cannot open scene file");
+    std::ostringstream kept;
+    std::string line;
+    bool inLumped = false;
+    while (std::getline(in, line)) {
+        const auto first = line.find_first_not_of(" \t");
+        if (first != std::string::npos && line[first] == '[') inLumped = line.compare(first, 8, "[lumped]") == 0;
+        if (!inLumped) kept << line << '\n';
+    }
+    std::string text = kept.str();
+    while (text.size() > 1 && text[text.size() - 1] == '\n' && text[text.size() - 2] == '\n') text.pop_back();
+    std::ofstream out(path + ".tmp");
+    out << text << '\n' << section;
+    out.close();
+    if (!out || std::rename((path + ".tmp").c_str(), path.c_str()) != 0)
+        throw InputError(path, 0, "could not rewrite the scene file");
+}
+
+int runCalibrateLumped(int argc, const char* const* argv) {
+    po::options_description o("calibrate-lumped");
+    o.add_options()
+        ("scene", po::value<std::string>(), "scene INI file without forest; its [lumped] keys other than the roughness are kept")
+        ("dem-runs", po::value<int>()->default_value(1000), "DEM runs without forest to calibrate on (ignored with --dem)")
+        ("dem", po::value<std::string>(), "or the runs.csv of a DEM campaign without forest on this scene (sylvarock simulate)")
+        ("runs", po::value<int>()->default_value(3000), "lumped runs per trial roughness (the paper: 3 000)")
+        ("seed", po::value<Seed>()->default_value(Seed{}, "1"), "seed of the DEM runs, the lumped runs and the bootstraps")
+        ("threads", po::value<int>()->default_value(0), "worker threads (0: all cores); results do not depend on it")
+        ("write", po::bool_switch(), "store the fit in the scene file's [lumped] section (replacing it)");
+    po::variables_map vm;
+    if (!parse(argc, argv, o, vm, "sylvarock calibrate-lumped --scene FILE.ini [--dem runs.csv | --dem-runs N] [--write]",
+               "  sylvarock calibrate-lumped --scene data/scenes/no-forest.ini --dem-runs 1000 --write\n"
+               "  sylvarock calibrate-lumped --scene data/scenes/no-forest.ini --dem out/no-forest/runs.csv\n"))
+        return 0;
+    if (!vm.count("scene")) throw InputError("--scene is required (e.g. data/scenes/no-forest.ini)");
+    const std::string scenePath = vm["scene"].as<std::string>();
+    const dem::Scene scene(dem::loadScene(scenePath));
+    if (scene.forested()) throw InputError(scenePath, 0, "calibrate on a scene without forest (the paper's Sect. 2.3.2)");
+    const int lumpedRuns = vm["runs"].as<int>(), demRuns = vm["dem-runs"].as<int>();
+    if (lumpedRuns < 100) throw InputError("--runs " + std::to_string(lumpedRuns) + ": a Dist50 needs at least 100 runs");
+    const unsigned long seed = vm["seed"].as<Seed>().value;
+    const int threads = threadCount(vm);
+
+    std::vector<double> dem;
+    if (vm.count("dem")) {
+        dem = readRunouts(vm["dem"].as<std::string>());
+    } else {
+        if (demRuns < 100) throw InputError("--dem-runs " + std::to_string(demRuns) + ": a Dist50 needs at least 100 runs");
+        std::cerr << "DEM: " << demRuns << " runs without forest\n";
+        dem::CampaignOptions c;
+        c.runs = demRuns;
+        c.seed = seed;
+        c.threads = threads;
+        ProgressBar bar(stderrIsTerminal());
+        c.onRunDone = [&bar](const dem::RunResult&, int done, int total) { bar.update(done, total); };
+        for (const auto& r : dem::runCampaign(scene, c))
+            if (r.reason != dem::StopReason::Failed) dem.push_back(r.runoutAlongSlope);
+    }
+    dem::LumpedCalibrationOptions opt;
+    opt.runs = lumpedRuns;
+    opt.seed = seed;
+    opt.threads = threads;
+    const auto fit = dem::calibrateLumped(scene, dem, opt);
+    std::printf("DEM without forest (%zu runs): Dist50 %.1f m [%.1f, %.1f], spread p90-p10 %.1f m [%.1f, %.1f]\n",
+                dem.size(), fit.demDist50.value, fit.demDist50.low, fit.demDist50.high, fit.demSpread.value,
+                fit.demSpread.low, fit.demSpread.high);
+    std::printf("lumped, roughness %.4f m (%d runs): Dist50 %.1f m [%.1f, %.1f], spread %.1f m [%.1f, %.1f]\n",
+                fit.roughness, lumpedRuns, fit.lumpedDist50.value, fit.lumpedDist50.low, fit.lumpedDist50.high,
+                fit.lumpedSpread.value, fit.lumpedSpread.low, fit.lumpedSpread.high);
+    std::printf("residual Dist50 %+.1f m; roughness %.4f m [%.4f, %.4f] over the DEM's Dist50 interval; %d trials\n",
+                fit.lumpedDist50.value - fit.demDist50.value, fit.roughness, fit.roughnessLow, fit.roughnessHigh,
+                fit.trials);
+    const auto& lp = scene.config().lumped;
+    std::ostringstream section;
+    section << "[lumped]\n# calibrated with: sylvarock calibrate-lumped --scene " << scenePath
+            << (vm.count("dem") ? " --dem " + vm["dem"].as<std::string>() : " --dem-runs " + std::to_string(demRuns))
+            << " --runs " << lumpedRuns << " --seed " << seed << " --write\n"
+            << "# DEM Dist50 " << fit.demDist50.value << " m [" << fit.demDist50.low << ", " << fit.demDist50.high
+            << "], lumped " << fit.lumpedDist50.value << " m; spread (p90-p10) DEM " << fit.demSpread.value
+            << " m, lumped " << fit.lumpedSpread.value << " m\n"
+            << "soil_type = " << lp.soilType << "\nrg70_m = " << fit.roughness << "\nrg20_m = " << fit.roughness
+            << "\nrg10_m = " << fit.roughness << "\n";
+    if (vm["write"].as<bool>()) {
+        rewriteLumpedSection(scenePath, section.str());
+        std::printf("written to %s [lumped]\n", scenePath.c_str());
+    } else {
+        std::printf("\n%s(add --write to store it in %s)\n", section.str().c_str(), scenePath.c_str());
+    }
+    return 0;
+}
+
+const CommandRegistration reg{{"calibrate-lumped", "fit the lumped model's soil on the DEM without forest (as the paper's Table 1)", &runCalibrateLumped}};
+
+}  // namespace
+}  // namespace sylva::cli

@@ -1,0 +1,155 @@
+// The lumped-mass model (docs/lumped.md): free flight, rebounds against hand-computed restitution,
+// tree impacts against Dorren & Berger (2006), thread-independence and the calibration on a target.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "DemTestScenes.hpp"
+#include "libdem/Campaign.hpp"
+#include "libdem/LumpedCalibration.hpp"
+#include "libdem/LumpedRebound.hpp"
+#include "libdem/LumpedRun.hpp"
+#include "libdem/LumpedTreeImpact.hpp"
+#include "libstand/InputError.hpp"
+
+using namespace sylva::dem;
+
+namespace {
+
+const std::string kNoForest = std::string(SYLVAROCK_DATA) + "/scenes/no-forest.ini";
+
+double sphereRadius(double volume) { return std::cbrt(3 * volume / (4 * M_PI)); }
+
+}  // namespace
+
+// Soil type 0 (R_n = 0) on flat ground: the sphere falls freely, lands, keeps no velocity and stops
+// where it landed, after the fall time of its lowest point through fall height - radius.
+TEST(LumpedRun, FallsFreelyAndStopsOnASoilThatTakesEverything) {
+    const Scene scene(sceneFromOverrides({"terrain.profile=" + std::string(SYLVAROCK_DATA) + "/slopes/flat.csv",
+                                          "terrain.width_m=20", "release.x_m=30", "release.y_m=10",
+                                          "release.fall_height_m=5", "lumped.soil_type=0"}));
+    const RunResult r = simulateLumped(scene, 0, 1);
+    const double drop = 5 - sphereRadius(0.5);
+    EXPECT_NEAR(r.duration, std::sqrt(2 * drop / 9.81), 1e-6);  // the bisection's tolerance is 1e-7 s
+    EXPECT_EQ(r.reason, StopReason::Rest);
+    EXPECT_NEAR(r.stop.x(), 30, 1e-12);
+    EXPECT_NEAR(r.stop.y(), 10, 1e-12);
+    EXPECT_NEAR(r.maxSpeed, std::sqrt(2 * 9.81 * drop), 1e-5);
+}
+
+// v = (3, 0, -4) on flat ground, no deviation: the tangential part comes back as R_t = 1/(1 + h/R)
+// times itself, the normal part reversed and scaled by R_n drawn in the soil type's range (talus:
+// 0.38 +- 0.04); over 20 000 rebounds the mean R_n is the type's mean (uniform draws: standard error
+// 0.023/sqrt(20000) = 1.6e-4, the bound is 10 of them).
+TEST(LumpedRebound, MatchesTheRestitutionOfTheSoilTypeAndTheObstacle) {
+    LumpedParams p;
+    p.soilType = 4;
+    p.rg70 = p.rg20 = p.rg10 = 0.05;
+    p.deviationSdDeg = 0;
+    const double radius = 0.5;
+    const LumpedRebound rebound(p, radius);
+    EXPECT_DOUBLE_EQ(rebound.tangentialRestitution(0.05), 1 / 1.1);
+    RunRandom rng(3);
+    double sum = 0, lo = 1, hi = 0;
+    const int n = 20000;
+    for (int i = 0; i < n; ++i) {
+        const Vec3 out = rebound.apply(Vec3(3, 0, -4), Vec3::UnitZ(), rng);
+        ASSERT_NEAR(out.x(), 3 / 1.1, 1e-12);
+        ASSERT_NEAR(out.y(), 0, 1e-12);
+        const double rn = out.z() / 4;  // |v_n| = 4 exceeds the obstacle's lift sin(a) R_t |v_t| = 1.1
+        sum += rn;
+        lo = std::min(lo, rn);
+        hi = std::max(hi, rn);
+    }
+    EXPECT_NEAR(sum / n, 0.38, 1.6e-3);
+    EXPECT_GE(lo, 0.34);
+    EXPECT_LE(hi, 0.42);
+    EXPECT_LT(lo, 0.345);  // the whole range is drawn
+    EXPECT_GT(hi, 0.415);
+}
+
+// A grazing rebound (no normal velocity) still leaves the ground: the obstacle of height h turns the
+// path up by a, cos a = 1 - h/R, and R_n applies to that (rolling as a succession of rebounds).
+TEST(LumpedRebound, RollingIsASuccessionOfSmallRebounds) {
+    LumpedParams p;
+    p.rg70 = p.rg20 = p.rg10 = 0.1;
+    p.deviationSdDeg = 0;
+    const LumpedRebound rebound(p, 0.5);
+    RunRandom rng(1);
+    const Vec3 out = rebound.apply(Vec3(10, 0, 0), Vec3::UnitZ(), rng);
+    const double rt = 1 / 1.2, sinA = std::sqrt(1 - 0.8 * 0.8);
+    EXPECT_NEAR(out.x(), 10 * rt, 1e-12);
+    EXPECT_GE(out.z(), 0.34 * sinA * 10 * rt);
+    EXPECT_LE(out.z(), 0.42 * sinA * 10 * rt);
+}
+
+TEST(LumpedTreeImpact, TakesTheEnergyOfDorrenAndBerger2006) {
+    LumpedParams p;
+    const LumpedTreeImpact impact(p);
+    const double e20 = 38.7 * std::pow(20.0, 2.31);  // J, DBH in cm
+    EXPECT_NEAR(impact.capacity(0.20), e20, 1e-9 * e20);
+    EXPECT_EQ(LumpedTreeImpact::eccentricityShare(0.2), 1.0);
+    EXPECT_NEAR(LumpedTreeImpact::eccentricityShare(-0.8), 0.3, 1e-12);
+    EXPECT_EQ(LumpedTreeImpact::eccentricityShare(1.0), 0.0);
+    RunRandom rng(5);
+    const double mass = 1350;
+    // Twice what the tree takes: half is left, the path turned by at most 22.5 degrees (central).
+    const double speed = std::sqrt(2 * 2 * e20 / mass);
+    const auto out = impact.apply(Vec3(speed, 0, 0), 0.20, 0.1, 1.0, mass, rng);
+    EXPECT_TRUE(out.treeBroken);
+    EXPECT_NEAR(0.5 * mass * out.velocity.squaredNorm(), e20, 1e-9 * e20);
+    EXPECT_GE(out.velocity.normalized().x(), std::cos(22.5 * M_PI / 180) - 1e-12);
+    // Less than it takes: the block stops at the tree.
+    const auto stopped = impact.apply(Vec3(0.5 * speed, 0, 0), 0.20, 0.0, 1.0, mass, rng);
+    EXPECT_FALSE(stopped.treeBroken);
+    EXPECT_EQ(stopped.velocity, Vec3::Zero());
+}
+
+TEST(LumpedRun, ResultsDoNotDependOnTheNumberOfThreads) {
+    const Scene scene(loadScene(kNoForest, {"release.y_min_m=80", "release.y_max_m=120"}));
+    CampaignOptions o;
+    o.model = Model::Lumped;
+    o.runs = 200;
+    o.seed = 9;
+    o.threads = 1;
+    const auto one = runCampaign(scene, o);
+    o.threads = 2;
+    const auto two = runCampaign(scene, o);
+    for (std::size_t i = 0; i < one.size(); ++i) {
+        ASSERT_EQ(one[i].stop, two[i].stop);  // bit for bit
+        ASSERT_EQ(one[i].steps, two[i].steps);
+    }
+    EXPECT_NE(one[0].stop, one[1].stop);
+}
+
+// The calibration finds the roughness that made a target: lumped run-outs at rg = 0.12 m (another
+// seed) as the "DEM". Dist50 falls by ~30 m per cm of roughness here and its standard error over 600
+// runs is ~1 m, so the roughness is found to ~0.5 mm; 5 % is ten times that.
+TEST(LumpedCalibration, RecoversTheRoughnessOfATarget) {
+    const Scene scene(loadScene(kNoForest, {"lumped.rg70_m=0.12", "lumped.rg20_m=0.12", "lumped.rg10_m=0.12"}));
+    CampaignOptions o;
+    o.model = Model::Lumped;
+    o.runs = 600;
+    o.seed = 77;
+    std::vector<double> target;
+    for (const auto& r : runCampaign(scene, o)) target.push_back(r.runoutAlongSlope);
+    LumpedCalibrationOptions c;
+    c.runs = 600;
+    c.seed = 1;
+    const auto fit = calibrateLumped(scene, target, c);
+    EXPECT_NEAR(fit.roughness, 0.12, 0.006);
+    EXPECT_NEAR(fit.lumpedDist50.value, fit.demDist50.value, 2 * c.tolerance);
+    EXPECT_LE(fit.roughnessLow, fit.roughness);
+    EXPECT_GE(fit.roughnessHigh, fit.roughness);
+}
+
+TEST(LumpedRun, RefusesAnUnknownSoilType) {
+    try {
+        sceneFromOverrides({"lumped.soil_type=9"});
+        FAIL() << "accepted soil type 9";
+    } catch (const sylva::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("0 to 7"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(sceneFromOverrides({"lumped.rg70_m=-0.1"}), sylva::InputError);
+    EXPECT_THROW(parseModel("rf3d"), sylva::InputError);
+}

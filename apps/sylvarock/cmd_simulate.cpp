@@ -69,6 +69,7 @@ int runSimulate(int argc, const char* const* argv) {
     }
     if (!vm.count("scene")) throw InputError("--scene is required (e.g. data/scenes/no-forest.ini)");
     if (!vm.count("out")) throw InputError("--out DIR is required");
+    const dem::Model model = dem::parseModel(vm["model"].as<std::string>());  // before the scene is built
     if (vm.count("block")) sets.insert(sets.begin(), "block.shape=" + vm["block"].as<std::string>());
     applyForestOption(vm, sets);
     const int runs = vm.count("runs") ? vm["runs"].as<int>() : -1;
@@ -86,7 +87,7 @@ int runSimulate(int argc, const char* const* argv) {
 
     dem::CampaignOptions c;
     c.runs = runs > 0 ? runs : (scene.config().launch.enabled ? 1 : 100);
-    c.model = dem::parseModel(vm["model"].as<std::string>());
+    c.model = model;
     if (c.model == dem::Model::Lumped && scene.config().launch.enabled)
         throw InputError("--model lumped follows blocks down a slope; a single-tree launch (block.speed_m_s) needs the DEM");
     c.seed = vm["seed"].as<Seed>().value;
@@ -105,7 +106,7 @@ int runSimulate(int argc, const char* const* argv) {
     if (c.run.recordTrajectory) dem::writeTrajectories(out + "/trajectories", results);
     if (!vm["no-figures"].as<bool>()) drawFigures(out, scene, results);
 
-    std::printf("%d runs in %.1f s wall (median %.3f s CPU per run)\n", s.runs, wall, s.cpu50);
+    std::printf("%d %s runs in %.1f s wall (median %.3f s CPU per run)\n", s.runs, dem::toString(c.model).c_str(), wall, s.cpu50);
     if (s.failedRuns < s.runs) {
         std::printf("run-out along the slope: Dist50 %.1f m (p10 %.1f, p90 %.1f); horizontal %.1f m\n", s.dist50,
                     s.runoutQuantiles.at(10), s.runoutQuantiles.at(90), s.horizontal50);
@@ -115,9 +116,10 @@ int runSimulate(int argc, const char* const* argv) {
                     100 * s.shareBounceBelow1m);
     }
     for (const auto& [k, v] : s.stopReasons) std::printf("stopped by %s: %d\n", k.c_str(), v);
-    std::printf("energy budget: worst imbalance %.2f %%; %d run(s) above integration.energy_warning (%.0f %%)%s\n",
-                100 * s.worstEnergyImbalance, s.energyFlaggedRuns, 100 * scene.config().integration.energyWarning,
-                s.energyFlaggedRuns > 0 ? ": flagged in runs.csv (energy_flag), rerun them with a smaller integration.safety" : "");
+    if (c.model == dem::Model::Dem)  // the lumped model has no energy audit: its losses are its restitutions
+        std::printf("energy budget: worst imbalance %.2f %%; %d run(s) above integration.energy_warning (%.0f %%)%s\n",
+                    100 * s.worstEnergyImbalance, s.energyFlaggedRuns, 100 * scene.config().integration.energyWarning,
+                    s.energyFlaggedRuns > 0 ? ": flagged in runs.csv (energy_flag), rerun them with a smaller integration.safety" : "");
     std::printf("results in %s/\n", out.c_str());
     if (s.failedRuns > 0) {
         std::cerr << "sylvarock simulate: " << s.failedRuns << " of " << s.runs

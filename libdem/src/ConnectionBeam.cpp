@@ -236,8 +236,4 @@ Vec2 ConnectionBeam::sectionMoment(int section) const { return moment_ + rule_->
 // Node b's balance: the moment falls from a to b by l e_z x V, so dM = (l / 2) (V_y, -V_x).
 Vec2 ConnectionBeam::shearForce() const { return (2 / length_) * Vec2(-change_.y(), change_.x()); }
 
-Vec2 ConnectionBeam::dampingMoment(const Vec2& relativeRate) const {
-    return broken_ ? Vec2::Zero() : Vec2(k_.viscosity * relativeRate);  // Eqs. 7-8
-}
-
 }  // namespace sylva::dem

@@ -88,7 +88,7 @@ private:
 // The scene's keys bound to one configuration, with the keys read as text or in other units.
 struct SceneKeys {
     SceneConfig c;
-    std::string shape = "cube", orientation = "random", reading = "isotropic";
+    std::string shape = "cube", orientation = "random", reading = "isotropic", damping = "viscous";
     double restitution = 0;  // used only when soil.restitution is given
     KeyTable table;
 
@@ -169,7 +169,9 @@ SceneKeys::SceneKeys() {
     k.number("stem.sigma_elast_pa", bend.sigmaElast, closed(1e4, 1e10, "Pa", "MPa typed as Pa?"), "sigma_Elast (Eq. 5)");
     k.number("stem.sigma_rupt_pa", bend.sigmaRupt, closed(1e4, 1e10, "Pa", "MPa typed as Pa?"), "sigma_Rupt (Eq. 6)");
     k.other("stem.sections", bend.sections, "sections per connection where Fig. 3 acts: 1 (the paper: at the connection's middle) | 3 | 5 (along the connection, where the moment changes; docs/model-stems.md)");
-    k.number("stem.tau_s", bend.tau, closed(0, 1, "s", "", "ms typed as s?"), "tau (Eqs. 7-8)");
+    k.number("stem.tau_s", bend.tau, closed(0, 1, "s", "", "ms typed as s?"), "tau (Eqs. 7-8), for stem.damping = viscous");
+    k.other("stem.damping", damping, "viscous (the paper's Eqs. 7-8) | constant_loss (wood's loss factor, independent of frequency; docs/model-stems.md)");
+    k.number("stem.loss_factor", bend.lossFactor, closed(0, 0.5, "", "", "percent typed as a fraction?"), "eta = tan(delta) of green wood, for stem.damping = constant_loss");
     k.other("stem.bending_reading", reading, "isotropic (moment vector) | per_axis (the paper's x and y laws)");
     k.number("stem.root_stiffness_nm_rad", stem.root.stiffness, aboveUpTo(0, 1e12, "N m/rad"), "K_Root (Eqs. 9-10)");
     k.number("stem.root_yield_moment_nm", stem.root.yieldMoment, aboveUpTo(0, 1e9, "N m", "", "N mm typed as N m?"), "M_a");
@@ -251,7 +253,7 @@ std::string overridesAsIni(const std::vector<std::string>& overrides) {
 SceneConfig load(const std::string* path, const std::vector<std::string>& overrides) {
     SceneKeys keys;
     SceneConfig& c = keys.c;
-    const std::string &shape = keys.shape, &orientation = keys.orientation, &reading = keys.reading;
+    const std::string &shape = keys.shape, &orientation = keys.orientation, &reading = keys.reading, &damping = keys.damping;
     const po::options_description& d = keys.table.keys();
     po::variables_map vm;
     std::istringstream setIni(overridesAsIni(overrides));
@@ -285,6 +287,9 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
     if (reading != "isotropic" && reading != "per_axis")
         throw InputError("stem.bending_reading must be isotropic or per_axis, not '" + reading + "'");
     c.stem.bending.reading = reading == "isotropic" ? BendingReading::Isotropic : BendingReading::PerAxis;
+    if (damping != "viscous" && damping != "constant_loss")
+        throw InputError("stem.damping must be viscous or constant_loss, not '" + damping + "'");
+    c.stem.bending.damping = damping == "viscous" ? StemDamping::Viscous : StemDamping::ConstantLoss;
     validate(c.stem);
     c.release.yRangeGiven = vm.count("release.y_min_m") || vm.count("release.y_max_m");
     if (!vm.count("release.y_min_m")) c.release.yMin = c.release.y;

@@ -83,9 +83,10 @@ Stem::Stem(const StemGeometry& g, const StemParams& p, const Vec3& foot, StemFoo
         const double dCon = 0.5 * (da + db);  // mean diameter between the nodes
         const double area = kPi * dCon * dCon / 4;
         const double polar = kPi * std::pow(dCon, 4) / 32;
+        ConnectionBeam beam(p.bending, da, db, shearModulus * area / length_, length_, p.bending.sections);
+        const BendingDamping damping(p.bending, beam.coefficients());
         connections_.push_back(Connection{dCon, p.bending.moe * area / length_, shearModulus * polar / length_,
-                                          ConnectionBeam(p.bending, da, db, shearModulus * area / length_, length_,
-                                                         p.bending.sections)});
+                                          std::move(beam), damping});
     }
 
     // Crown: m_C spread equally over the nodes within L_C of the top (the top node at least).
@@ -131,7 +132,8 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         ledger.unloadingGain += w.created;
         const double linear = 0.5 * (k.axial * stretch.z() * stretch.z() + k.twist * theta.z() * theta.z());
         if (k.bending.broken()) {
-            ledger.rupture += w.released + linear;  // M_Rupt reached: resistance lost along all axes
+            // M_Rupt reached: resistance lost along all axes
+            ledger.rupture += w.released + linear + k.damping.release();
             continue;
         }
         stored += linear + k.bending.storedEnergy();
@@ -141,8 +143,10 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         const Eigen::Matrix3d toTheta = inverseLeftJacobian(theta);
         const Eigen::Matrix3d ra = orientation[a].toRotationMatrix();
         const Vec3 rate = toTheta * (ra.transpose() * (angularVelocity[b] - angularVelocity[a]));
-        const Vec2 damping = k.bending.dampingMoment(rate.head<2>());  // Eqs. 7-8
-        ledger.bendingDamping += damping.dot(rate.head<2>()) * dt;
+        const BendingDamping::Step damped = k.damping.advance(rate.head<2>(), dt);
+        ledger.bendingDamping += damped.dissipated;
+        stored += k.damping.storedEnergy();
+        const Vec2& damping = damped.moment;
 
         const Vec2& mb = k.bending.moment();
         const Vec3 moment = ra * (toTheta.transpose() * Vec3(mb.x() + damping.x(), mb.y() + damping.y(), k.twist * theta.z()));
@@ -200,7 +204,8 @@ double Stem::stableTimeStep() const {
             s.add(k.axial, 0, row(invMass(i), invMass(j)));
             // The shear spring bounds the connection's transverse stiffness (ConnectionBeam: in series with bending).
             s.add(k.bending.shearStiffness(), 0, row(invShear(i), invShear(j)));
-            s.add(h.elastic, h.viscosity, row(invInertia(i), invInertia(j)));  // K_Elast: the stiffest branch
+            // K_Elast: the stiffest branch of the hinge, with what the damping adds.
+            s.add(h.elastic + k.damping.addedStiffness(), k.damping.viscosity(), row(invInertia(i), invInertia(j)));
             s.add(k.twist, 0, row(invInertia(i), invInertia(j)));
         }
         if (i == 0 && support_ == StemFoot::RootSpring) s.add(root_.stiffness(), 0, invInertia(0));

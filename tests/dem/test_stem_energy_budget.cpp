@@ -22,8 +22,9 @@ struct Budget {
 
 // Settles the stem under gravity, then pushes the node nearest `height` along x with `force` for
 // `duration` and follows it up to 1 s, at `safety` times the stable step.
-Budget strike(double dbhCm, StemFoot foot, double height, double force, double duration, double safety) {
-    Stem stem(beechStem(dbhCm), StemParams{}, Vec3::Zero(), foot);
+Budget strike(double dbhCm, StemFoot foot, double height, double force, double duration, double safety,
+              const StemParams& params = StemParams{}) {
+    Stem stem(beechStem(dbhCm), params, Vec3::Zero(), foot);
     const Vec3 gravity(0, 0, -9.81);
     const double dt = safety * stem.stableTimeStep();
     StemStepper settle(gravity, 6.0);
@@ -78,4 +79,21 @@ TEST(StemEnergyBudget, ClosesWithRootPlasticity) {
     print("root spring", 0.9, b);
     ASSERT_GT(b.ledger.rootPlasticity, 0.1 * b.input) << "the strike must yield the root";
     EXPECT_LT(b.worstGap, 1e-2 * b.input);
+}
+
+// The same strike with wood's constant loss factor instead of Eqs. 7-8 (BendingDamping): its
+// Maxwell branches store energy as well as dissipate it, and both must be in the account. Same
+// bounds as with the viscous law, for the same reason.
+TEST(StemEnergyBudget, ClosesWithTheConstantLossFactor) {
+    StemParams p;
+    p.bending.damping = StemDamping::ConstantLoss;
+    p.bending.sections = 3;
+    const Budget coarse = strike(20, StemFoot::Clamped, 1.5, 40e3, 0.03, 0.9, p);
+    const Budget fine = strike(20, StemFoot::Clamped, 1.5, 40e3, 0.03, 0.3, p);
+    print("constant loss", 0.9, coarse);
+    print("constant loss", 0.3, fine);
+    ASSERT_GT(coarse.ledger.bendingPlasticity, 0.1 * coarse.input) << "the strike must yield the stem";
+    ASSERT_GT(coarse.ledger.bendingDamping, 0) << "the branches must dissipate";
+    EXPECT_LT(coarse.worstGap, 1e-2 * coarse.input);
+    EXPECT_LT(fine.worstGap / fine.input, 0.5 * coarse.worstGap / coarse.input);
 }

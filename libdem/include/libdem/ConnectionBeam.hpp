@@ -41,7 +41,6 @@ public:
     Vec2 sectionMoment(int section) const;          // M + xi dM at a section, N m
     // Transverse force the connection exerts on node a (node b takes the opposite), connection frame, N.
     Vec2 shearForce() const;
-    Vec2 dampingMoment(const Vec2& relativeRate) const;  // Eqs. 7-8, N m; zero once broken
     bool broken() const { return broken_; }
     double storedEnergy() const { return stored_; }  // bending and shear, recoverable elastically, J
     const HingeCoefficients& coefficients() const { return k_; }  // of the whole connection at D_con

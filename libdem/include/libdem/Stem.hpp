@@ -11,6 +11,7 @@
 // Node state is kept as arrays over nodes so that a step is a few loops over contiguous memory.
 #include <vector>
 
+#include "libdem/BendingDamping.hpp"
 #include "libdem/ConnectionBeam.hpp"
 #include "libdem/RigidBody.hpp"
 #include "libdem/RootSpring.hpp"
@@ -84,6 +85,7 @@ private:
         double diameter;  // D_con
         double axial, twist;  // N/m, N m/rad
         ConnectionBeam bending;  // bending and shear
+        BendingDamping damping;  // of the bending (Eqs. 7-8 or wood's loss factor)
         double weightCompression = 0;  // m: how much the weight above shortens the axial spring (carryOwnWeight)
     };
     StemGeometry geometry_;

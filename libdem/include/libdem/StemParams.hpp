@@ -9,13 +9,21 @@ enum class BendingReading {
     PerAxis,    // the paper's words: an independent trilinear law about x and about y of the connection frame
 };
 
+// What damps a stem's bending (BendingDamping; docs/model-stems.md, "Damping").
+enum class StemDamping {
+    Viscous,       // the paper's Eqs. 7-8: tau K_Elast times the relative rotation rate
+    ConstantLoss,  // wood's internal friction: a loss factor independent of frequency
+};
+
 struct BendingParams {
     double moe = 8.7e9;          // MOE, Pa (Eq. 2)
     double ePlast = 2.1e9;       // E_Plast, Pa (Eq. 3)
     double eUnld = 5.3e9;        // E_Unld, Pa (Eq. 4)
     double sigmaElast = 37e6;    // sigma_Elast, Pa (Eq. 5)
     double sigmaRupt = 94e6;     // sigma_Rupt, Pa (Eq. 6)
-    double tau = 5e-4;           // tau, s (Eqs. 7-8)
+    double tau = 5e-4;           // tau, s (Eqs. 7-8), for StemDamping::Viscous
+    StemDamping damping = StemDamping::Viscous;
+    double lossFactor = 0.02;    // eta = tan(delta) of green wood, for StemDamping::ConstantLoss
     // Sections along each connection where Fig. 3 is applied (ConnectionBeam): 1 is the paper's
     // hinge at the connection's middle; 3 and 5 follow the moment's change along the connection.
     int sections = 1;

@@ -1,0 +1,56 @@
+#pragma once
+// The damping of a connection's bending: what turns the energy of a stem's vibrations into heat.
+//
+// Two laws (StemDamping):
+// - Viscous, the paper's Eqs. 7-8: a dashpot tau K_Elast on the relative rotation rate. Its damping
+//   ratio tau omega / 2 grows with frequency without bound, so what it takes from an impact depends on
+//   how many high bending modes the node spacing carries (docs/model-stems.md, "Damping").
+// - ConstantLoss: wood's internal friction, whose loss factor eta = tan(delta) hardly depends on
+//   frequency (Bremaud et al. 2012, Ann. For. Sci. 69:373). A generalised Maxwell model: kBranches
+//   spring-dashpot branches in parallel with the elastic hinge, relaxation times one per decade, each
+//   branch stiffness g K_Elast with g = eta / (pi / (2 ln 10) - 3 eta), so that the loss factor is
+//   eta within 6 % for omega from 1 to 5000 rad/s, a stem's first mode to the bending waves of an
+//   impact (BendingDamping.ConstantLossFactorAcrossTheBand; the "constant Q" of seismic modelling:
+//   Emmerich & Korn 1987, Geophysics 52:1252). The branches are integrated exactly over a step (the
+//   rate held constant), so they do not limit the stable step and dissipate exactly what they should.
+#include <array>
+
+#include <Eigen/Core>
+
+#include "libdem/BendingLaw.hpp"
+
+namespace sylva::dem {
+
+class BendingDamping {
+public:
+    static constexpr int kBranches = 6;
+    static constexpr double kTauMax = 2.0;  // s: the slowest branch (omega 0.5 rad/s, below a stem's first mode)
+
+    BendingDamping() = default;
+    // For a connection of hinge coefficients k (K_Elast and tau K_Elast).
+    BendingDamping(const BendingParams& p, const HingeCoefficients& k);
+
+    struct Step {
+        Vec2 moment = Vec2::Zero();  // on the relative rotation (x, y), N m, at the step's end
+        double dissipated = 0;       // J, >= 0
+    };
+    // Over a step dt at the relative rotation rate `rate` (x, y of the connection frame, rad/s).
+    Step advance(const Vec2& rate, double dt);
+    // Energy held by the Maxwell branches' springs, J (zero for the viscous law).
+    double storedEnergy() const;
+    // The connection broke: the branches let go; returns what they held, J.
+    double release();
+
+    // For the stable step: the stiffness the branches add at high frequency (N m/rad) and the
+    // dashpot coefficient (N m s/rad) of the viscous law.
+    double addedStiffness() const { return kBranches * branchStiffness_; }
+    double viscosity() const { return viscosity_; }
+    static double relaxationTime(int branch);  // s
+
+private:
+    double viscosity_ = 0;        // tau K_Elast (Eqs. 7-8)
+    double branchStiffness_ = 0;  // g K_Elast
+    std::array<Vec2, kBranches> branch_{};
+};
+
+}  // namespace sylva::dem

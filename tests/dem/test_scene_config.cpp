@@ -58,6 +58,22 @@ TEST(SceneConfigParser, BadInputNamesTheFileAndTheKey) {
     EXPECT_THROW(loadScene("/nonexistent/scene.ini"), sylva::InputError);
 }
 
+// The stem's damping law is chosen by name; the paper's is the default.
+TEST(SceneConfigParser, StemDampingIsNamed) {
+    EXPECT_EQ(sceneFromOverrides({}).stem.bending.damping, StemDamping::Viscous);
+    const SceneConfig c = sceneFromOverrides({"stem.damping=constant_loss", "stem.loss_factor=0.015"});
+    EXPECT_EQ(c.stem.bending.damping, StemDamping::ConstantLoss);
+    EXPECT_EQ(c.stem.bending.lossFactor, 0.015);
+    try {
+        sceneFromOverrides({"stem.damping=hysteretic"});
+        FAIL() << "unknown damping accepted";
+    } catch (const sylva::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("stem.damping"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("hysteretic"), std::string::npos);
+    }
+    EXPECT_THROW(sceneFromOverrides({"stem.loss_factor=2"}), sylva::InputError);
+}
+
 namespace {
 std::string refusal(const std::vector<std::string>& overrides) {
     try {

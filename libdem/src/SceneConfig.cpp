@@ -88,7 +88,7 @@ private:
 // The scene's keys bound to one configuration, with the keys read as text or in other units.
 struct SceneKeys {
     SceneConfig c;
-    std::string shape = "cube", orientation = "random", reading = "isotropic", damping = "viscous";
+    std::string shape = "cube", orientation = "random", reading = "isotropic", damping = "viscous", anchorage = "fixed";
     double restitution = 0;  // used only when soil.restitution is given
     KeyTable table;
 
@@ -174,7 +174,9 @@ SceneKeys::SceneKeys() {
     k.number("stem.loss_factor", bend.lossFactor, closed(0, 0.5, "", "", "percent typed as a fraction?"), "eta = tan(delta) of green wood, for stem.damping = constant_loss");
     k.other("stem.bending_reading", reading, "isotropic (moment vector) | per_axis (the paper's x and y laws)");
     k.number("stem.root_stiffness_nm_rad", stem.root.stiffness, aboveUpTo(0, 1e12, "N m/rad"), "K_Root (Eqs. 9-10)");
-    k.number("stem.root_yield_moment_nm", stem.root.yieldMoment, aboveUpTo(0, 1e9, "N m", "", "N mm typed as N m?"), "M_a");
+    k.number("stem.root_yield_moment_nm", stem.root.yieldMoment, aboveUpTo(0, 1e9, "N m", "", "N mm typed as N m?"), "M_a, for stem.anchorage = fixed");
+    k.other("stem.anchorage", anchorage, "fixed (the paper: M_a and K_Root for every tree) | stem_weight (M_a = C_reg x stem mass, winching tests; docs/model-stems.md)");
+    k.number("stem.root_turning_moment_nm_per_kg", stem.root.turningMomentPerKg, aboveUpTo(0, 1e4, "N m/kg"), "C_reg, for stem.anchorage = stem_weight");
     k.number("tree_contact.er_pa", tc.woodRadialModulus, modulus, "E_r (Eqs. 22-23)");
     k.number("tree_contact.eb_pa", tc.blockModulus, modulus, "E_b (Eq. 22)");
     k.number("tree_contact.kappa_block_stem", tc.kappaBlockStem, ratio, "kappa_b-t");
@@ -253,7 +255,8 @@ std::string overridesAsIni(const std::vector<std::string>& overrides) {
 SceneConfig load(const std::string* path, const std::vector<std::string>& overrides) {
     SceneKeys keys;
     SceneConfig& c = keys.c;
-    const std::string &shape = keys.shape, &orientation = keys.orientation, &reading = keys.reading, &damping = keys.damping;
+    const std::string &shape = keys.shape, &orientation = keys.orientation, &reading = keys.reading, &damping = keys.damping,
+                      &anchorage = keys.anchorage;
     const po::options_description& d = keys.table.keys();
     po::variables_map vm;
     std::istringstream setIni(overridesAsIni(overrides));
@@ -290,6 +293,9 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
     if (damping != "viscous" && damping != "constant_loss")
         throw InputError("stem.damping must be viscous or constant_loss, not '" + damping + "'");
     c.stem.bending.damping = damping == "viscous" ? StemDamping::Viscous : StemDamping::ConstantLoss;
+    if (anchorage != "fixed" && anchorage != "stem_weight")
+        throw InputError("stem.anchorage must be fixed or stem_weight, not '" + anchorage + "'");
+    c.stem.root.anchorage = anchorage == "fixed" ? RootAnchorage::Fixed : RootAnchorage::StemWeight;
     validate(c.stem);
     c.release.yRangeGiven = vm.count("release.y_min_m") || vm.count("release.y_max_m");
     if (!vm.count("release.y_min_m")) c.release.yMin = c.release.y;

@@ -89,6 +89,17 @@ Stem::Stem(const StemGeometry& g, const StemParams& p, const Vec3& foot, StemFoo
                                           std::move(beam), damping});
     }
 
+    if (p.root.anchorage == RootAnchorage::StemWeight) {
+        // Winching tests: the critical turning moment grows with the stem's fresh mass (Nicoll et al.
+        // 2006); the root keeps the rotation at which it yields, M_a / K_Root, of the given parameters.
+        double stemMass = 0;
+        for (const double m : mass_) stemMass += m;  // the cone alone: the crown is added below
+        RootSpringParams anchored = p.root;
+        anchored.yieldMoment = p.root.turningMomentPerKg * stemMass;
+        anchored.stiffness = p.root.stiffness * anchored.yieldMoment / p.root.yieldMoment;
+        root_ = RootSpring(anchored, p.bending.reading);
+    }
+
     // Crown: m_C spread equally over the nodes within L_C of the top (the top node at least).
     std::size_t crownNodes = 0;
     const auto inCrown = [&](std::size_t i) { return g.height - restHeight(i) <= g.crownLength + 1e-9 * g.height; };

@@ -139,3 +139,25 @@ TEST(StemBuild, ImpossibleStemsAreInputErrors) {
         EXPECT_TRUE(contains(buildError(h, p), "crown mass"));
     }
 }
+
+// Anchorage from winching tests (stem.anchorage = stem_weight): M_a is C_reg times the stem's own
+// mass (the cone, without the crown of Eq. 13), and K_Root keeps the given parameters' yield
+// rotation M_a / K_Root; the paper's fixed M_a stays the default.
+TEST(StemBuild, AnchorageFromStemWeight) {
+    const StemGeometry g = beechStem(25);
+    StemParams p;
+    const Stem paper(g, p, Vec3::Zero(), StemFoot::RootSpring);
+    EXPECT_EQ(paper.root().yieldMoment(), 200e3);
+    EXPECT_EQ(paper.root().stiffness(), 7.5e6);
+
+    p.root.anchorage = RootAnchorage::StemWeight;
+    p.root.turningMomentPerKg = 120;
+    const Stem anchored(g, p, Vec3::Zero(), StemFoot::RootSpring);
+    double cone = -g.crownMass;
+    for (const double m : anchored.mass()) cone += m;
+    EXPECT_NEAR(anchored.root().yieldMoment(), 120 * cone, 1e-9 * 120 * cone);
+    EXPECT_NEAR(anchored.root().yieldMoment() / anchored.root().stiffness(), 200e3 / 7.5e6, 1e-12);
+    // Heavier stems hold more: M_a grows as the stem's mass, about DBH^2 H.
+    const Stem thin(beechStem(15), p, Vec3::Zero(), StemFoot::RootSpring);
+    EXPECT_LT(thin.root().yieldMoment(), 0.5 * anchored.root().yieldMoment());
+}

@@ -21,6 +21,7 @@ public:
     Eigen::Vector3d moment() const;  // N m: bending x, y (Eqs. 9-10) and twist z
     double storedEnergy() const;
     double stiffness() const { return stiffness_; }
+    double yieldMoment() const { return bending_.coefficients().yieldMoment; }  // M_a, N m
 
 private:
     BendingLaw bending_;

@@ -30,9 +30,17 @@ struct BendingParams {
     BendingReading reading = BendingReading::Isotropic;
 };
 
+// How the root's yield moment M_a is set (docs/model-stems.md, "Anchorage").
+enum class RootAnchorage {
+    Fixed,        // the paper: M_a and K_Root the same for every tree
+    StemWeight,   // winching tests: M_a = C_reg x stem mass, K_Root keeping the fixed M_a / K_Root rotation
+};
+
 struct RootSpringParams {
     double stiffness = 7.5e6;    // K_Root, N m/rad (Eqs. 9-10; Table 2's units are swapped, model-notes.md)
     double yieldMoment = 200e3;  // M_a, N m
+    RootAnchorage anchorage = RootAnchorage::Fixed;
+    double turningMomentPerKg = 120;  // C_reg, N m per kg of fresh stem, for RootAnchorage::StemWeight
 };
 
 struct StemParams {

@@ -125,7 +125,7 @@ std::vector<dem::RunResult> campaign(const dem::Scene& scene, int runs, const St
 // the block's energy after varies by 25 % between steps whose stem terms agree within 5 %).
 double treeDissipation(const dem::RunResult& r, const std::string& what) {
     if (r.impacts.empty()) throw dem::SimulationError(what + ": the block never touched the tree");
-    const dem::ForestEnergy& f = r.forestEnergy;
+    const dem::ForestLedger& f = r.forestEnergy;
     return f.bendingPlasticity + f.bendingDamping + f.rootPlasticity + f.rupture + f.contactFriction;
 }
 

@@ -160,8 +160,7 @@ RunResult simulateBlock(const Scene& scene, int run, std::uint64_t seed, const R
     r.energyLineDeg = r.runoutHorizontal > 0 ? std::atan2(r.release.z() - r.stop.z(), r.runoutHorizontal) * 180 / M_PI : 0;
     r.energy = motion.energy();
     r.impacts = motion.forest().finish(block);
-    const ForestLedger l = motion.forest().ledger();
-    r.forestEnergy = {l.bendingPlasticity, l.bendingDamping, l.rootPlasticity, l.rupture, l.unloadingGain, l.contactFriction, l.frozen};
+    r.forestEnergy = motion.forest().ledger();
     return r;
 }
 

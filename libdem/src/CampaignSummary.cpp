@@ -101,7 +101,7 @@ void writeImpactsCsv(const std::string& path, const std::vector<RunResult>& runs
 void writeImpactEnergyJson(const std::string& path, const RunResult& r) {
     auto out = openOut(path);
     JsonWriter j(out);
-    const ForestEnergy& f = r.forestEnergy;
+    const ForestLedger& f = r.forestEnergy;
     j.beginObject();
     j.field("impacts", static_cast<int>(r.impacts.size()));
     if (!r.impacts.empty()) {
@@ -117,7 +117,8 @@ void writeImpactEnergyJson(const std::string& path, const RunResult& r) {
     j.field("bending_plasticity", f.bendingPlasticity).field("bending_damping", f.bendingDamping);
     j.field("root_plasticity", f.rootPlasticity).field("rupture", f.rupture);
     j.field("contact_friction", f.contactFriction).field("soil_damping", r.energy.contactDamping);
-    j.field("soil_friction", r.energy.friction).field("left_vibrating_in_stems", f.frozen);
+    j.field("soil_friction", r.energy.friction).field("stem_soil_damping", f.contactDamping);
+    j.field("left_vibrating_in_stems", f.frozen);
     j.endObject();
     j.field("created_by_unloading_law_j", f.unloadingGain);
     j.field("energy_imbalance", r.energy.imbalance).field("energy_flag", r.energy.flagged);

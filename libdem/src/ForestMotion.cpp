@@ -392,6 +392,7 @@ void ForestMotion::detectStemSoil() {
                 g.meanSpinNormal = 0.5 * s.angularVelocity[k].dot(g.normal);
                 g.radiusA = r;
                 g.radiusB = rs;
+                g.movingMass = s.mass()[k];  // the soil sphere does not move
                 touch->touching = true;
             }
         }
@@ -511,7 +512,7 @@ void ForestMotion::integrate(double dt) {
             a.broken = broken;
         }
     }
-    budget_ += stems + contactLedger_.friction + frozenElastic_ + frozenPotential_ + slept_.frozen + slept_.bendingPlasticity +
+    budget_ += stems + contactLedger_.friction + contactLedger_.contactDamping + frozenElastic_ + frozenPotential_ + slept_.frozen + slept_.bendingPlasticity +
                slept_.bendingDamping + slept_.rootPlasticity + slept_.rupture - slept_.unloadingGain - injected_;
 }
 
@@ -615,6 +616,7 @@ ForestLedger ForestMotion::ledger() const {
         l.unloadingGain += a.stem.ledger.unloadingGain;
     }
     l.contactFriction = contactLedger_.friction;
+    l.contactDamping = contactLedger_.contactDamping;
     return l;
 }
 

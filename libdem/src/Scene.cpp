@@ -50,11 +50,10 @@ Scene::Scene(SceneConfig config, stand::Forest forest)
         trees_ = TreeField(forest_, *soil_);
         laws_.set(BodyKind::Block, BodyKind::Stem, std::make_shared<BlockStemContact>(config_.stemContact));
         laws_.set(BodyKind::Stem, BodyKind::Stem, std::make_shared<StemStemContact>(config_.stemContact));
-        // Broken pieces on the ground: the soil's spring and friction; no dashpot (alpha_cr of
-        // Eq. 16 is defined for the block), the pieces lose energy in their own bending.
-        SoilContactParams onSoil = config_.soilContact;
-        onSoil.dampingRatio = 0;
-        laws_.set(BodyKind::Stem, BodyKind::Soil, std::make_shared<SoilContact>(onSoil, 1.0));
+        // Stems and broken pieces on the ground: the soil's law as under the block, its dashpot a
+        // fraction of the critical one of each stem node (Eq. 16 with the node's mass,
+        // ContactGeometry::movingMass), so that falling pieces lose energy on landing as a block does.
+        laws_.set(BodyKind::Stem, BodyKind::Soil, std::make_shared<SoilContact>(config_.soilContact, block_.mass()));
     }
 }
 

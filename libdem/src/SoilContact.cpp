@@ -20,6 +20,7 @@ SoilContact::SoilContact(const SoilContactParams& p, double blockMass)
     : kn_(p.kn),
       kt_(p.kappa * p.kn),                                          // Eq. 19
       alpha_(p.dampingRatio * 2.0 * std::sqrt(p.kn * blockMass)),   // Eqs. 15-16
+      ratio_(p.dampingRatio),
       tanPhi_(std::tan(p.frictionDeg * M_PI / 180)),
       dashpotPulls_(p.dashpotPulls) {
     if (!(p.kn > 0)) throw InputError("soil.kn must be positive");
@@ -36,7 +37,9 @@ Vec3 SoilContact::force(const ContactGeometry& g, ContactHistory& h, double dt, 
     // dashpotPulls = false the normal force is floored at zero, as Yade's viscoelastic law does
     // (docs/model.md compares the two readings).
     const double spring = kn_ * g.overlap;
-    const double fn = dashpotPulls_ ? spring + alpha_ * overlapRate : std::max(0.0, spring + alpha_ * overlapRate);
+    // Eq. 16 with the mass at this contact when it is not the block's (a stem node on the soil).
+    const double alpha = g.movingMass > 0 ? ratio_ * 2.0 * std::sqrt(kn_ * g.movingMass) : alpha_;
+    const double fn = dashpotPulls_ ? spring + alpha * overlapRate : std::max(0.0, spring + alpha * overlapRate);
     // Work of the dashpot over the last step: the mean of the forces applied before and after it
     // (trapezoid, as the leapfrog applies them; each along its own normal, which turns as the block
     // slides over the soil sphere: one shared normal would book a first-order error) times the

@@ -156,7 +156,7 @@ TEST(ExtremeStems, ThinStemBreaksUnderTheBlock) {
     // 2.5 kN m (D = 6.5 cm) over a plastic rotation to rupture of 2 (sigma_Rupt - sigma_Elast) l /
     // (E_Plast D) = 0.4 rad, about 1 kJ per connection that yields. All the stem's dissipation stays
     // below 5 % of the 152 kJ the block brings.
-    const ForestEnergy& f = r.forestEnergy;
+    const ForestLedger& f = r.forestEnergy;
     const double stem = f.bendingPlasticity + f.bendingDamping + f.rootPlasticity + f.rupture;
     std::printf("5 cm stem took %.0f J of the block's %.0f J\n", stem, r.impacts[0].energyBefore);
     EXPECT_LT(stem, 0.05 * r.impacts[0].energyBefore);

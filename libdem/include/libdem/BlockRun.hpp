@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "libdem/ForestLedger.hpp"
 #include "libdem/Scene.hpp"
 
 namespace sylva::dem {
@@ -28,13 +29,6 @@ struct EnergyBudget {
     bool flagged = false;        // imbalance above integration.energy_warning: the budget did not close to it
 };
 
-// Where the energy the forest took went, J (the forest's part of the run's budget).
-struct ForestEnergy {
-    double bendingPlasticity = 0, bendingDamping = 0, rootPlasticity = 0, rupture = 0;
-    double unloadingGain = 0;   // created by Fig. 3 at a connection's first yield (docs/model-stems.md)
-    double contactFriction = 0; // block/stem, stem/stem, stem/soil sliding
-    double frozen = 0;          // vibration of stems put back to sleep
-};
 
 // One block/tree impact: what the block had before and after, and what became of the tree.
 struct TreeImpact {
@@ -59,7 +53,7 @@ struct RunResult {
     double meanDt = 0;
     EnergyBudget energy;
     std::vector<TreeImpact> impacts;
-    ForestEnergy forestEnergy;
+    ForestLedger forestEnergy;
     std::vector<TrajectorySample> trajectory;  // filled when asked for
     std::string failure;  // StopReason::Failed: what stopped it
 };

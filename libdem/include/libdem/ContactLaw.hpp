@@ -13,6 +13,9 @@ struct ContactGeometry {
     Vec3 relativeVelocity = Vec3::Zero();  // velocity of A's material point minus B's, at `point`
     double meanSpinNormal = 0;  // 0.5 (omega_A + omega_B) . normal: twist of the contact plane
     double radiusA = 0, radiusB = 0;  // local radii (sphere, or stem connection at the contact)
+    // Reduced mass of the two bodies at the contact, kg, for laws whose dashpot is a fraction of the
+    // critical one (Eq. 16); 0: the law's own reference mass (the block's).
+    double movingMass = 0;
 };
 
 // State a contact carries from one step to the next, and across connections of a stem.

@@ -10,18 +10,12 @@
 #include <vector>
 
 #include "libdem/BlockRun.hpp"
+#include "libdem/ForestLedger.hpp"
 #include "libdem/StableStep.hpp"
 #include "libdem/StemStepper.hpp"
 
 namespace sylva::dem {
 
-// Where the forest's energy went, J (for the run's energy budget).
-struct ForestLedger {
-    double bendingPlasticity = 0, bendingDamping = 0, rootPlasticity = 0, rupture = 0;
-    double unloadingGain = 0;   // energy Fig. 3 creates at a connection's first yield (a source)
-    double contactFriction = 0; // block/stem, stem/stem and stem/soil sliding
-    double frozen = 0;          // kinetic energy of stems put to sleep while still vibrating
-};
 
 class ForestMotion {
 public:

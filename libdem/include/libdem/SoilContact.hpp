@@ -27,7 +27,7 @@ public:
     double tangentialStiffness() const { return kt_; }  // K_t (Eq. 19)
 
 private:
-    double kn_, kt_, alpha_, tanPhi_;
+    double kn_, kt_, alpha_, ratio_, tanPhi_;
     bool dashpotPulls_;
 };
 

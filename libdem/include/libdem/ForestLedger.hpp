@@ -1,0 +1,14 @@
+#pragma once
+// Where the energy the forest took during a run went, J: the forest's part of the run's energy
+// budget (ForestMotion keeps it; RunResult reports it; energy.json writes it).
+namespace sylva::dem {
+
+struct ForestLedger {
+    double bendingPlasticity = 0, bendingDamping = 0, rootPlasticity = 0, rupture = 0;
+    double unloadingGain = 0;    // created by Fig. 3 at a connection's first yield (docs/model-stems.md)
+    double contactFriction = 0;  // block/stem, stem/stem and stem/soil sliding
+    double contactDamping = 0;   // the soil's dashpot under stems and broken pieces (Eqs. 14-16)
+    double frozen = 0;           // kinetic energy of stems put to sleep while still vibrating
+};
+
+}  // namespace sylva::dem

@@ -60,6 +60,12 @@ double nodeInverseMass(const Stem& s, std::size_t i, const Vec3& point, const Ve
 }
 
 
+double fastestNode(const Stem& s) {
+    double v2 = 0;
+    for (const Vec3& v : s.velocity) v2 = std::max(v2, v.squaredNorm());
+    return std::sqrt(v2);
+}
+
 }  // namespace
 
 ForestMotion::ForestMotion(const Scene& scene)
@@ -528,6 +534,9 @@ void ForestMotion::sleep(const RigidBody& block, double t) {
         for (const auto& st : stemTouches_)
             if (!st.ignored && (st.treeA == a.tree || st.treeB == a.tree)) leaning = true;
         if (leaning) continue;
+        // Sleeping follows motion for broken stems: a falling top is not frozen mid-air.
+        if (a.broken && t - a.lastBlockContact < cfg_.activity.pieceMaxTime && fastestNode(a.stem) > cfg_.activity.pieceRestSpeed)
+            continue;
         if (openImpactOf_.count(a.tree)) closeImpact(openImpactOf_.at(a.tree), block);
         Stem& s = a.stem;
         // Its vibration stops with it (the block is gone); that energy is booked, not lost silently.

@@ -66,6 +66,12 @@ struct StopConfig {
 struct ForestActivity {
     double wakeMargin = 0.1;    // m: a stem wakes when the block's bounding sphere comes this close (plus one step's travel)
     double sleepAfter = 0.3;    // s without block contact, the block out of reach, before a stem sleeps again
+    // A broken stem's pieces fall on: it sleeps only once every node is slower than this, m/s,
+    double pieceRestSpeed = 0.2;
+    // or this long after the block's last contact, s (a piece rolling downslope). 0: a broken stem
+    // sleeps as a whole one does. Off by default until stems step at their own rate (issue 12): an
+    // awake piece holds the whole run to the stems' step (docs/model-stems.md).
+    double pieceMaxTime = 0;
     bool allAwake = false;      // reference mode: every stem awake from the start (small forests only)
 };
 

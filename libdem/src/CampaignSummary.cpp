@@ -120,6 +120,12 @@ void writeImpactEnergyJson(const std::string& path, const RunResult& r) {
     j.field("soil_friction", r.energy.friction).field("stem_soil_damping", f.contactDamping);
     j.field("left_vibrating_in_stems", f.frozen);
     j.endObject();
+    // The tree's own terms over the impact only (first contact to the block leaving the tree).
+    const StemLedger during = r.impacts.empty() ? StemLedger{} : r.impacts.front().duringImpact;
+    j.key("impact_dissipated_j").beginObject();
+    j.field("bending_plasticity", during.bendingPlasticity).field("bending_damping", during.bendingDamping);
+    j.field("root_plasticity", during.rootPlasticity).field("rupture", during.rupture);
+    j.endObject();
     j.field("created_by_unloading_law_j", f.unloadingGain);
     j.field("energy_imbalance", r.energy.imbalance).field("energy_flag", r.energy.flagged);
     j.endObject();

@@ -149,6 +149,7 @@ void ForestMotion::detect(const RigidBody& block, const std::vector<Vec3>& centr
         if (i.inContact || !i.wasInContact) continue;
         i.record.speedAfter = block.velocity.norm();
         i.record.energyAfter = block.kineticEnergy();
+        i.record.duringImpact = awake(tree)->stem.ledger.since(i.atFirstContact);
     }
     detectStemStem();
     detectStemSoil();
@@ -581,15 +582,12 @@ void ForestMotion::openImpact(const RigidBody& block, const BlockStemTouch& touc
     const double lateral = v.norm() > 0 ? (v.x() * w.y() - v.y() * w.x()) / v.norm() : 0;
     r.eccentricity = std::clamp(lateral / (block.boundingRadius() + 0.5 * p.geometry.dbh), -1.0, 1.0);
     openImpactOf_[touch.tree] = impacts_.size();
-    impacts_.push_back({r, true, true, false});
+    impacts_.push_back({r, true, true, false, awake(touch.tree)->stem.ledger});
 }
 
 void ForestMotion::closeImpact(std::size_t index, const RigidBody& block) {
     OpenImpact& i = impacts_[index];
-    if (i.inContact) {  // still touching when the run ends
-        i.record.speedAfter = block.velocity.norm();
-        i.record.energyAfter = block.kineticEnergy();
-    }
+    const bool touching = i.inContact;  // still touching when the run ends: "after" is now
     for (std::uint32_t tree = 0; tree < trees_.size(); ++tree) {
         if (trees_.tree(tree).id != i.record.tree) continue;
         const Stem* s = nullptr;
@@ -599,6 +597,11 @@ void ForestMotion::closeImpact(std::size_t index, const RigidBody& block) {
         if (s) {
             i.record.stemBroken = anyBroken(*s);
             i.record.rootYielded = s->ledger.rootPlasticity > 0;
+        }
+        if (touching) {
+            i.record.speedAfter = block.velocity.norm();
+            i.record.energyAfter = block.kineticEnergy();
+            if (s) i.record.duringImpact = s->ledger.since(i.atFirstContact);
         }
         openImpactOf_.erase(tree);
         break;

@@ -114,4 +114,14 @@ TEST(TreeImpact, BrokenPiecesLoseEnergyOnTheSoil) {
     const double tree = f.bendingPlasticity + f.bendingDamping + f.rootPlasticity + f.rupture;
     std::cout << "frozen " << f.frozen << " J against the tree's " << tree << " J\n";
     EXPECT_LT(f.frozen, 0.05 * tree);
+    // Over the impact alone (first contact to the block leaving) the tree's terms are part of the
+    // run's: the top's landing comes after.
+    const StemLedger& d = r.impacts[0].duringImpact;
+    for (const double term : {d.bendingPlasticity, d.bendingDamping, d.rootPlasticity, d.rupture}) EXPECT_GE(term, 0.0);
+    EXPECT_LE(d.bendingPlasticity, f.bendingPlasticity);
+    EXPECT_LE(d.rupture, f.rupture);
+    const double during = d.bendingPlasticity + d.bendingDamping + d.rootPlasticity + d.rupture;
+    std::cout << "the tree took " << during << " J during the impact, " << tree << " J in the run\n";
+    EXPECT_LT(during, tree);
+    EXPECT_GT(during, 0.0);
 }

@@ -6,6 +6,7 @@
 
 #include "libdem/ForestLedger.hpp"
 #include "libdem/Scene.hpp"
+#include "libdem/StemLedger.hpp"
 
 namespace sylva::dem {
 
@@ -39,6 +40,9 @@ struct TreeImpact {
     double height = 0;          // above the stem's foot, m
     double eccentricity = 0;    // lateral offset of the block's centre from the stem axis / (r_block + r_stem), in [-1, 1]
     bool stemBroken = false, rootYielded = false;
+    // What the tree's own terms took from the first contact to the block leaving it (not what its
+    // broken pieces dissipate later, falling on the soil), J.
+    StemLedger duringImpact;
 };
 
 struct RunResult {

@@ -94,6 +94,7 @@ private:
         bool open;
         bool inContact;     // the block touches the stem now; "after" is taken when this ends
         bool wasInContact;  // ... and did at the previous step
+        StemLedger atFirstContact;  // the stem's ledger when the impact began
     };
 
     void wake(std::uint32_t tree, double t);

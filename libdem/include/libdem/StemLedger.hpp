@@ -7,7 +7,7 @@ namespace sylva::dem {
 
 struct StemLedger {
     double bendingPlasticity = 0;  // plastic branch of the trilinear law (Eqs. 2-6), >= 0
-    double bendingDamping = 0;     // viscous moments of Eqs. 7-8, >= 0
+    double bendingDamping = 0;     // damping of the bending (Eqs. 7-8 or wood's loss factor), >= 0
     double rootPlasticity = 0;     // plateau of the root spring at M_a (Eqs. 9-10), >= 0
     double rupture = 0;            // energy stored in a connection when it broke, lost with it
     double relaxation = 0;         // numerical damping used to settle a stem (StemStepper), not physics
@@ -17,6 +17,13 @@ struct StemLedger {
     double externalWork = 0;       // work of the loads given to StemStepper (not gravity, which is potential)
 
     double dissipated() const { return bendingPlasticity + bendingDamping + rootPlasticity + rupture + relaxation; }
+    // What was booked since `earlier` (an earlier state of the same ledger).
+    StemLedger since(const StemLedger& earlier) const {
+        return {bendingPlasticity - earlier.bendingPlasticity, bendingDamping - earlier.bendingDamping,
+                rootPlasticity - earlier.rootPlasticity,       rupture - earlier.rupture,
+                relaxation - earlier.relaxation,               unloadingGain - earlier.unloadingGain,
+                externalWork - earlier.externalWork};
+    }
 };
 
 }  // namespace sylva::dem

@@ -118,6 +118,7 @@ void writeImpactEnergyJson(const std::string& path, const RunResult& r) {
     j.field("root_plasticity", f.rootPlasticity).field("rupture", f.rupture);
     j.field("contact_friction", f.contactFriction).field("soil_damping", r.energy.contactDamping);
     j.field("soil_friction", r.energy.friction).field("stem_soil_damping", f.contactDamping);
+    j.field("contact_crushing", f.contactCrushing);
     j.field("left_vibrating_in_stems", f.frozen);
     j.endObject();
     // The tree's own terms over the impact only (first contact to the block leaving the tree).

@@ -519,7 +519,7 @@ void ForestMotion::integrate(double dt) {
             a.broken = broken;
         }
     }
-    budget_ += stems + contactLedger_.friction + contactLedger_.contactDamping + frozenElastic_ + frozenPotential_ + slept_.frozen + slept_.bendingPlasticity +
+    budget_ += stems + contactLedger_.friction + contactLedger_.contactDamping + contactLedger_.crushing + frozenElastic_ + frozenPotential_ + slept_.frozen + slept_.bendingPlasticity +
                slept_.bendingDamping + slept_.rootPlasticity + slept_.rupture - slept_.unloadingGain - injected_;
 }
 
@@ -629,6 +629,7 @@ ForestLedger ForestMotion::ledger() const {
     }
     l.contactFriction = contactLedger_.friction;
     l.contactDamping = contactLedger_.contactDamping;
+    l.contactCrushing = contactLedger_.crushing;
     return l;
 }
 

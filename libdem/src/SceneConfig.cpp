@@ -181,6 +181,8 @@ SceneKeys::SceneKeys() {
     k.number("tree_contact.eb_pa", tc.blockModulus, modulus, "E_b (Eq. 22)");
     k.number("tree_contact.kappa_block_stem", tc.kappaBlockStem, ratio, "kappa_b-t");
     k.number("tree_contact.friction_block_stem_deg", tc.frictionBlockStemDeg, friction, "phi_b-t");
+    k.number("tree_contact.crushing_strength_pa", tc.crushingStrength, closed(0, 1e9, "Pa", "", "MPa typed as Pa?"),
+             "wood's compression strength across the grain: the stem crushes under the block (0: the paper's elastic contact)");
     k.number("tree_contact.kappa_stem_stem", tc.kappaStemStem, ratio, "kappa_t-t");
     k.number("tree_contact.friction_stem_stem_deg", tc.frictionStemStemDeg, friction, "phi_t-t");
     k.number("forest.wake_margin_m", act.wakeMargin, closed(0, 100, "m"), "a stem is built when the block comes this close");

@@ -1,6 +1,7 @@
 #include "libdem/StemContact.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "libstand/InputError.hpp"
 
@@ -22,8 +23,15 @@ double springEnergy(const ContactGeometry& g, const ContactHistory& h, double kn
 }  // namespace
 
 BlockStemContact::BlockStemContact(const StemContactParams& p)
-    : er_(p.woodRadialModulus), eb_(p.blockModulus), kappa_(p.kappaBlockStem), tanPhi_(tanDeg(p.frictionBlockStemDeg)) {
+    : er_(p.woodRadialModulus), eb_(p.blockModulus), kappa_(p.kappaBlockStem), tanPhi_(tanDeg(p.frictionBlockStemDeg)),
+      crushing_(p.crushingStrength) {
     if (!(er_ > 0 && eb_ > 0 && kappa_ > 0)) throw InputError("stem contact moduli and kappa must be positive");
+    if (!(crushing_ >= 0)) throw InputError("tree_contact.crushing_strength_pa must be >= 0");
+}
+
+double BlockStemContact::crushingStiffness(const ContactGeometry& g) const {
+    if (crushing_ <= 0) return std::numeric_limits<double>::infinity();
+    return 2 * M_PI * crushing_ * std::sqrt(g.radiusA * g.radiusB);
 }
 
 double BlockStemContact::normalStiffness(const ContactGeometry& g) const {
@@ -32,11 +40,25 @@ double BlockStemContact::normalStiffness(const ContactGeometry& g) const {
 }
 
 Vec3 BlockStemContact::force(const ContactGeometry& g, ContactHistory& h, double dt, DissipationLedger& ledger) const {
-    return elasticFrictional(g, h, normalStiffness(g), kappa_, tanPhi_, dt, ledger);  // Eq. 20
+    const double ke = normalStiffness(g), kc = crushingStiffness(g);
+    if (!(kc < ke)) return elasticFrictional(g, h, ke, kappa_, tanPhi_, dt, ledger);  // Eq. 20
+    // On the envelope the dent is U_n (1 - k_c / K): the deepest overlap reached so far is the dent
+    // over that factor. Going deeper crushes: the work k_c (U^2 - U_max^2) / 2 minus what the elastic
+    // spring stores more, (k_c^2 / K) (U^2 - U_max^2) / 2, is dissipated.
+    const double keep = 1 - kc / ke;
+    const double deepest = h.plasticOverlap / keep;
+    if (g.overlap > deepest) {
+        ledger.crushing += 0.5 * kc * keep * (g.overlap * g.overlap - deepest * deepest);
+        h.plasticOverlap = keep * g.overlap;
+    }
+    const double fn = ke * std::max(0.0, g.overlap - h.plasticOverlap);
+    return fn * g.normal + updateShearForce(g, h, kappa_ * ke, fn, tanPhi_, dt, ledger);
 }
 
 double BlockStemContact::storedEnergy(const ContactGeometry& g, const ContactHistory& h) const {
-    return springEnergy(g, h, normalStiffness(g), kappa_);
+    const double ke = normalStiffness(g);
+    const double elastic = std::max(0.0, g.overlap - h.plasticOverlap);
+    return 0.5 * ke * elastic * elastic + 0.5 * h.shearForce.squaredNorm() / (kappa_ * ke);
 }
 
 StemStemContact::StemStemContact(const StemContactParams& p)

@@ -1,6 +1,7 @@
 // Block/stem and stem/stem contacts (Eqs. 20-23) and the segment geometry they use.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "libdem/SegmentGeometry.hpp"
@@ -34,6 +35,43 @@ TEST(ContactStem, ElasticNormalForceStoresAndReturnsItsWork) {
     EXPECT_NEAR(f.x(), k * 2e-3, 1e-6 * k * 2e-3);  // Eq. 20: no dashpot
     EXPECT_NEAR(law.storedEnergy(g, h), 0.5 * k * 4e-6, 1e-9 * k);
     EXPECT_EQ(ledger.contactDamping, 0.0);
+}
+
+// Crushing (tree_contact.crushing_strength_pa): a 100 kg mass driven head-on into the stem at 2 m/s
+// along the normal, integrated by leapfrog at 1e-6 s, against the closed forms of a linear loading
+// envelope k_c and elastic unloading K (Walton & Braun 1986): deepest overlap v0 sqrt(m / k_c),
+// rebound speed v0 sqrt(k_c / K), crushing work the kinetic energy lost, a dent U_max (1 - k_c / K)
+// left. 1e-3: the leapfrog's error at ~1500 steps per contact.
+TEST(ContactStem, CrushingLoadsOnTheEnvelopeAndUnloadsElastically) {
+    StemContactParams p;
+    p.crushingStrength = 3.7e6;
+    const BlockStemContact law(p);
+    ContactGeometry g;
+    g.radiusA = 0.2;
+    g.radiusB = 0.1;
+    g.normal = -Vec3::UnitX();  // force on the block A along -x: it moves along +x into the stem
+    const double k = law.normalStiffness(g), kc = law.crushingStiffness(g);
+    ASSERT_NEAR(kc, 2 * M_PI * 3.7e6 * std::sqrt(0.02), 1e-6 * kc);
+    ASSERT_LT(kc, 0.1 * k);
+    const double m = 100, v0 = 2, dt = 1e-6;
+    ContactHistory h;
+    DissipationLedger ledger;
+    double x = 0, v = v0, deepest = 0;
+    for (int i = 0; i < 10000000 && x >= 0; ++i) {
+        g.overlap = x;
+        g.relativeVelocity = Vec3(v, 0, 0);
+        const Vec3 f = x > 0 ? law.force(g, h, dt, ledger) : Vec3::Zero();
+        v += f.x() / m * dt;
+        x += v * dt;
+        deepest = std::max(deepest, x);
+        if (x <= h.plasticOverlap && v < 0) break;  // left the dent: contact over
+    }
+    EXPECT_NEAR(deepest, v0 * std::sqrt(m / kc), 1e-3 * deepest);
+    EXPECT_NEAR(-v, v0 * std::sqrt(kc / k), 1e-3 * v0 * std::sqrt(kc / k));
+    EXPECT_NEAR(ledger.crushing, 0.5 * m * (v0 * v0 - v * v), 1e-3 * 0.5 * m * v0 * v0);
+    EXPECT_NEAR(h.plasticOverlap, deepest * (1 - kc / k), 1e-3 * deepest);
+    // Without a crushing strength the contact is Eq. 20's elastic spring: nothing is crushed.
+    EXPECT_FALSE(BlockStemContact(StemContactParams{}).crushingStiffness(g) < k);
 }
 
 TEST(ContactStem, StemsSlideOnEachOtherWithoutFriction) {

@@ -26,12 +26,14 @@ struct ContactHistory {
     // Overlap already there when the contact was first seen (a stem woken into a bent neighbour):
     // the spring starts from it instead of releasing energy no motion stored.
     double overlapOffset = 0;
+    double plasticOverlap = 0;  // permanent dent of a crushing contact (BlockStemContact), m
 };
 
 // Work done by the dissipative parts of the contact laws, J (>= 0), for the energy audit.
 struct DissipationLedger {
     double contactDamping = 0;  // normal dashpots (Eq. 14)
     double friction = 0;        // Coulomb sliding (Eq. 18)
+    double crushing = 0;        // wood crushed under a block (BlockStemContact with a crushing strength)
 };
 
 class ContactLaw {

@@ -8,6 +8,7 @@ struct ForestLedger {
     double unloadingGain = 0;    // created by Fig. 3 at a connection's first yield (docs/model-stems.md)
     double contactFriction = 0;  // block/stem, stem/stem and stem/soil sliding
     double contactDamping = 0;   // the soil's dashpot under stems and broken pieces (Eqs. 14-16)
+    double contactCrushing = 0;  // wood crushed under the block (tree_contact.crushing_strength_pa)
     double frozen = 0;           // kinetic energy of stems put to sleep while still vibrating
 };
 

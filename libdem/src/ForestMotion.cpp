@@ -23,6 +23,9 @@ bool anyBroken(const Stem& s) {
     return false;
 }
 
+// Broken or uprooted: parts of it fall and are followed until they rest.
+bool falling(const Stem& s) { return anyBroken(s) || s.root().failed(); }
+
 double horizontalDistance(const Vec3& a, const Vec3& b) { return (a - b).head<2>().norm(); }
 
 // History of a contact first seen at this overlap. Stems are checked against each other only
@@ -101,7 +104,7 @@ void ForestMotion::wake(std::uint32_t tree, double t) {
         injected_ += potentialEnergy(stem, cfg_.gravity) + stem.elasticEnergy();  // the stem enters the energy budget
     }
     const double step = stem.stableTimeStep();
-    const bool broken = anyBroken(stem);
+    const bool broken = falling(stem);
     // The all-awake reference steps every stem, standing or not.
     awake_.push_back(AwakeStem{tree, std::move(stem), {}, step, t, broken, cfg_.activity.allAwake, {}, {}});
     stemPairsStale_ = true;
@@ -513,7 +516,7 @@ void ForestMotion::integrate(double dt) {
         // The stem's own budget without the work of the contact loads, which the contacts' springs
         // and the block account for: energy + dissipated - created, at the step's start.
         stems += e.total() + e.netLoss + 0.5 * (externalBefore + a.stem.ledger.externalWork);
-        const bool broken = anyBroken(a.stem);
+        const bool broken = falling(a.stem);
         if (broken != a.broken) {
             a.stableStep = a.stem.stableTimeStep();  // a broken connection no longer limits the step
             a.broken = broken;
@@ -597,6 +600,7 @@ void ForestMotion::closeImpact(std::size_t index, const RigidBody& block) {
         if (s) {
             i.record.stemBroken = anyBroken(*s);
             i.record.rootYielded = s->ledger.rootPlasticity > 0;
+            i.record.rootFailed = s->root().failed();
         }
         if (touching) {
             i.record.speedAfter = block.velocity.norm();

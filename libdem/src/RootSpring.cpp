@@ -16,19 +16,31 @@ HingeCoefficients rootCoefficients(const RootSpringParams& p) {
 }  // namespace
 
 RootSpring::RootSpring(const RootSpringParams& p, BendingReading reading)
-    : bending_(rootCoefficients(p), reading), stiffness_(p.stiffness) {}
+    : bending_(rootCoefficients(p), reading), stiffness_(p.stiffness), failureRotation_(p.failureRotation) {}
 
 double RootSpring::rotate(const Eigen::Vector3d& dTheta) {
+    if (failed_) return 0;
     twistAngle_ += dTheta.z();
-    return bending_.rotate(dTheta.head<2>()).dissipated;
+    const double yieldMoment = bending_.coefficients().yieldMoment;
+    const double dissipated = bending_.rotate(dTheta.head<2>()).dissipated;
+    // On the perfectly plastic plateau the plastic work is M_a times the plastic rotation.
+    plasticRotation_ += dissipated / yieldMoment;
+    if (plasticRotation_ == 0 || yieldMoment / stiffness_ + plasticRotation_ < failureRotation_) return dissipated;
+    const double released = storedEnergy();
+    failed_ = true;
+    bending_.snap();
+    twistAngle_ = 0;
+    return dissipated + released;
 }
 
 Eigen::Vector3d RootSpring::moment() const {
+    if (failed_) return Eigen::Vector3d::Zero();
     const Vec2& m = bending_.moment();
     return {m.x(), m.y(), stiffness_ * twistAngle_};
 }
 
 double RootSpring::storedEnergy() const {
+    if (failed_) return 0;
     return bending_.storedEnergy() + 0.5 * stiffness_ * twistAngle_ * twistAngle_;
 }
 

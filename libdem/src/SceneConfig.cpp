@@ -4,9 +4,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 
+#include "libdem/StemParameterSet.hpp"
 #include "libstand/InputError.hpp"
 
 namespace sylva::dem {
@@ -90,14 +92,22 @@ struct SceneKeys {
     SceneConfig c;
     std::string shape = "cube", orientation = "random", reading = "isotropic", damping = "viscous", anchorage = "fixed";
     double restitution = 0;  // used only when soil.restitution is given
+    double rootFailureDeg = 0;  // stem.root_failure_rotation_deg
+    std::string parameterSet;   // stem.parameters
     KeyTable table;
 
-    SceneKeys();
+    // The defaults are those of a named parameter set for the stems, which the keys then change.
+    explicit SceneKeys(StemParameterSet set = StemParameterSet::Calibrated);
     SceneKeys(const SceneKeys&) = delete;  // the table points into this object
     SceneKeys& operator=(const SceneKeys&) = delete;
 };
 
-SceneKeys::SceneKeys() {
+SceneKeys::SceneKeys(StemParameterSet set) : parameterSet(name(set)) {
+    apply(set, c.stem, c.stemContact);
+    c.stemParameters = parameterSet;
+    damping = c.stem.bending.damping == StemDamping::Viscous ? "viscous" : "constant_loss";
+    anchorage = c.stem.root.anchorage == RootAnchorage::Fixed ? "fixed" : "stem_weight";
+    rootFailureDeg = c.stem.root.failureRotation * 180 / std::acos(-1.0);
     KeyTable& k = table;
     auto& t = c.terrain;
     auto& s = c.soilContact;
@@ -159,6 +169,7 @@ SceneKeys::SceneKeys() {
     k.number("stop.rest_distance_m", st.restDistance, aboveUpTo(0, 100, "m"), "the block rests once its centre stays within this distance of one point ...");
     k.number("stop.rest_time_s", st.restTime, aboveUpTo(0, 3600, "s"), "... for this long");
     k.number("stop.max_time_s", st.maxTime, aboveUpTo(0, 1e5, "s"), "simulated time limit");
+    k.other("stem.parameters", parameterSet, "named set of the tree's parameters, the defaults of the stem.* and tree_contact.* keys: calibrated (converged in the node spacing, anchorage from winching tests) | toe2018 (the paper's Table 2 and stem, to rerun its study); docs/model-stems.md");
     k.number("stem.node_spacing_m", stem.nodeSpacing, aboveUpTo(0.005, 5, "m", "mm typed as m?"), "largest distance between a stem's nodes");
     k.number("stem.tip_diameter_m", stem.tipDiameter, closed(0, 0.5, "m", "", "cm typed as m?"), "diameter of the cone at H_T");
     k.number("stem.density_kg_m3", stem.density, closed(200, 2000, "kg/m^3", "t/m^3 typed as kg/m^3?"), "fresh wood (Table 2: 1.2 t/m^3)");
@@ -177,6 +188,8 @@ SceneKeys::SceneKeys() {
     k.number("stem.root_yield_moment_nm", stem.root.yieldMoment, aboveUpTo(0, 1e9, "N m", "", "N mm typed as N m?"), "M_a, for stem.anchorage = fixed");
     k.other("stem.anchorage", anchorage, "fixed (the paper: M_a and K_Root for every tree) | stem_weight (M_a = C_reg x stem mass, winching tests; docs/model-stems.md)");
     k.number("stem.root_turning_moment_nm_per_kg", stem.root.turningMomentPerKg, aboveUpTo(0, 1e4, "N m/kg"), "C_reg, for stem.anchorage = stem_weight");
+    k.number("stem.root_failure_rotation_deg", rootFailureDeg, aboveUpTo(0, 180, "deg"),
+             "rotation of the foot at which the root plate lets go (inf: never, the paper's plateau at M_a)");
     k.number("tree_contact.er_pa", tc.woodRadialModulus, modulus, "E_r (Eqs. 22-23)");
     k.number("tree_contact.eb_pa", tc.blockModulus, modulus, "E_b (Eq. 22)");
     k.number("tree_contact.kappa_block_stem", tc.kappaBlockStem, ratio, "kappa_b-t");
@@ -256,8 +269,33 @@ std::string overridesAsIni(const std::vector<std::string>& overrides) {
     return ini;
 }
 
+// The value of stem.parameters (--set over the file), read first: it sets the other keys' defaults.
+StemParameterSet parameterSetOf(const std::string* path, const std::vector<std::string>& overrides) {
+    po::options_description d;
+    std::string set = "calibrated";
+    d.add_options()("stem.parameters", po::value(&set)->default_value(set));
+    po::variables_map vm;
+    bool fromSet = false;
+    try {
+        std::istringstream setIni(overridesAsIni(overrides));
+        po::store(po::parse_config_file(setIni, d, true), vm);
+        fromSet = !vm["stem.parameters"].defaulted();
+        std::ifstream in(path ? *path : std::string());
+        if (path && in) po::store(po::parse_config_file(in, d, true), vm);
+    } catch (const po::error&) {
+        return StemParameterSet::Calibrated;  // the full parse below reports it with its context
+    }
+    po::notify(vm);
+    try {
+        return parseStemParameterSet(set);
+    } catch (const InputError& e) {
+        if (fromSet || !path) throw InputError(std::string("--set ") + e.what());
+        throw InputError(*path, lineOf(*path, "stem.parameters"), e.what());
+    }
+}
+
 SceneConfig load(const std::string* path, const std::vector<std::string>& overrides) {
-    SceneKeys keys;
+    SceneKeys keys(parameterSetOf(path, overrides));
     SceneConfig& c = keys.c;
     const std::string &shape = keys.shape, &orientation = keys.orientation, &reading = keys.reading, &damping = keys.damping,
                       &anchorage = keys.anchorage;
@@ -300,6 +338,7 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
     if (anchorage != "fixed" && anchorage != "stem_weight")
         throw InputError("stem.anchorage must be fixed or stem_weight, not '" + anchorage + "'");
     c.stem.root.anchorage = anchorage == "fixed" ? RootAnchorage::Fixed : RootAnchorage::StemWeight;
+    c.stem.root.failureRotation = keys.rootFailureDeg * std::acos(-1.0) / 180;
     validate(c.stem);
     c.release.yRangeGiven = vm.count("release.y_min_m") || vm.count("release.y_max_m");
     if (!vm.count("release.y_min_m")) c.release.yMin = c.release.y;

@@ -28,6 +28,7 @@ void validate(const StemParams& p) {
     require(p.root.yieldMoment > 0, "M_a (N m)", p.root.yieldMoment, "> 0");
     require(std::isfinite(p.root.turningMomentPerKg) && p.root.turningMomentPerKg > 0, "C_reg (N m/kg)",
             p.root.turningMomentPerKg, "> 0");
+    require(p.root.failureRotation > 0, "root failure rotation (rad)", p.root.failureRotation, "> 0");
     require(std::isfinite(p.density) && p.density > 0, "density (kg/m^3)", p.density, "> 0");
     require(p.poisson > -1 && p.poisson < 0.5, "Poisson ratio", p.poisson, "in (-1, 0.5)");
     require(std::isfinite(p.nodeSpacing) && p.nodeSpacing > 0, "node spacing (m)", p.nodeSpacing, "> 0");

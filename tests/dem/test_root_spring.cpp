@@ -63,3 +63,33 @@ TEST(RootSpring, DiagonalLimitDependsOnTheReading) {
     EXPECT_NEAR(iso.moment().x(), iso.moment().y(), kTol);
     EXPECT_NEAR(perAxis.moment().head<2>().norm(), std::sqrt(2.0) * p.yieldMoment, kTol);
 }
+
+// With a failure rotation the plate lets go: up to it the law is unchanged; there the root has taken
+// exactly the work done on it, M_a (theta_f - theta_a / 2) (the elastic triangle plus the plateau),
+// booked as dissipated, and from then on it carries no moment, bending or twist, and stores nothing.
+TEST(RootSpring, PlateLetsGoAtTheFailureRotation) {
+    RootSpringParams p;
+    p.failureRotation = 0.2;  // rad, 7.5 theta_a
+    RootSpring root(p, BendingReading::Isotropic);
+    const double thetaA = p.yieldMoment / p.stiffness;
+    const int n = 1000;
+    const double d = 0.3 / n;  // past the failure rotation
+    double theta = 0, dissipated = 0, work = 0;
+    for (int i = 0; i < n; ++i) {
+        const double before = root.moment().y();
+        dissipated += root.rotate(Eigen::Vector3d(0, d, 0.01 * d));
+        theta += d;
+        if (!root.failed()) {
+            work += 0.5 * (before + root.moment().y()) * d;
+            ASSERT_NEAR(root.moment().y(), std::min(p.stiffness * theta, p.yieldMoment), kTol) << "theta = " << theta;
+        }
+    }
+    ASSERT_TRUE(root.failed());
+    EXPECT_EQ(root.moment(), Eigen::Vector3d::Zero());
+    EXPECT_EQ(root.storedEnergy(), 0.0);
+    // Failure is detected at the end of the increment that crosses it: one increment's plateau late.
+    const double expected = p.yieldMoment * (p.failureRotation - 0.5 * thetaA);
+    EXPECT_NEAR(dissipated, expected + 0.5 * p.stiffness * std::pow(0.01 * p.failureRotation, 2), p.yieldMoment * d);
+    EXPECT_NEAR(work, expected, p.yieldMoment * d);
+    EXPECT_EQ(root.rotate(Eigen::Vector3d(0, -0.1, 0)), 0.0);  // nothing left to unload
+}

@@ -1,5 +1,6 @@
 // Scene files: Table 2 defaults, overrides, and clear errors.
 #include <gtest/gtest.h>
+#include <cmath>
 
 #include <filesystem>
 #include <fstream>
@@ -58,10 +59,11 @@ TEST(SceneConfigParser, BadInputNamesTheFileAndTheKey) {
     EXPECT_THROW(loadScene("/nonexistent/scene.ini"), sylva::InputError);
 }
 
-// The stem's damping law is chosen by name; the paper's is the default.
+// The stem's damping law is chosen by name; the calibrated set's is the default, the paper's in toe2018.
 TEST(SceneConfigParser, StemDampingIsNamed) {
-    EXPECT_EQ(sceneFromOverrides({}).stem.bending.damping, StemDamping::Viscous);
-    const SceneConfig c = sceneFromOverrides({"stem.damping=constant_loss", "stem.loss_factor=0.015"});
+    EXPECT_EQ(sceneFromOverrides({}).stem.bending.damping, StemDamping::ConstantLoss);
+    EXPECT_EQ(sceneFromOverrides({"stem.parameters=toe2018"}).stem.bending.damping, StemDamping::Viscous);
+    const SceneConfig c = sceneFromOverrides({"stem.parameters=toe2018", "stem.damping=constant_loss", "stem.loss_factor=0.015"});
     EXPECT_EQ(c.stem.bending.damping, StemDamping::ConstantLoss);
     EXPECT_EQ(c.stem.bending.lossFactor, 0.015);
     try {
@@ -72,6 +74,38 @@ TEST(SceneConfigParser, StemDampingIsNamed) {
         EXPECT_NE(std::string(e.what()).find("hysteretic"), std::string::npos);
     }
     EXPECT_THROW(sceneFromOverrides({"stem.loss_factor=2"}), sylva::InputError);
+}
+
+// A named set gives the defaults of every stem.* and tree_contact.* key; single keys still change
+// them, and a file's stem.parameters is refused with its line when unknown.
+TEST(SceneConfigParser, StemParameterSetsAreNamed) {
+    const SceneConfig paper = sceneFromOverrides({"stem.parameters=toe2018"});
+    EXPECT_EQ(paper.stemParameters, "toe2018");
+    EXPECT_EQ(paper.stem.bending.sections, 1);
+    EXPECT_EQ(paper.stem.root.anchorage, RootAnchorage::Fixed);
+    EXPECT_EQ(paper.stem.root.yieldMoment, 200e3);  // Table 2
+    EXPECT_EQ(paper.stemContact.crushingStrength, 0.0);
+    EXPECT_TRUE(std::isinf(paper.stem.root.failureRotation));
+    const SceneConfig calibrated = sceneFromOverrides({});
+    EXPECT_EQ(calibrated.stemParameters, "calibrated");
+    EXPECT_EQ(calibrated.stem.bending.sections, 3);
+    EXPECT_EQ(calibrated.stem.root.anchorage, RootAnchorage::StemWeight);
+    EXPECT_GT(calibrated.stemContact.crushingStrength, 0.0);
+    EXPECT_TRUE(std::isfinite(calibrated.stem.root.failureRotation));
+    const SceneConfig changed = sceneFromOverrides({"stem.parameters=toe2018", "stem.sections=5", "stem.root_failure_rotation_deg=30"});
+    EXPECT_EQ(changed.stem.bending.sections, 5);
+    EXPECT_NEAR(changed.stem.root.failureRotation, 30 * std::acos(-1.0) / 180, 1e-12);
+    EXPECT_EQ(changed.stem.bending.damping, StemDamping::Viscous);
+    try {
+        loadScene(writeScene("set.ini", "[terrain]\nwidth_m = 10\n[stem]\nparameters = toe2019\n"));
+        FAIL() << "unknown parameter set accepted";
+    } catch (const sylva::InputError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("set.ini"), std::string::npos) << what;
+        EXPECT_NE(what.find(":4"), std::string::npos) << what;
+        EXPECT_NE(what.find("toe2019"), std::string::npos) << what;
+    }
+    EXPECT_THROW(sceneFromOverrides({"stem.root_failure_rotation_deg=-5"}), sylva::InputError);
 }
 
 namespace {

@@ -39,7 +39,7 @@ struct TreeImpact {
     double energyBefore = 0, energyAfter = 0;  // block's kinetic energy, J
     double height = 0;          // above the stem's foot, m
     double eccentricity = 0;    // lateral offset of the block's centre from the stem axis / (r_block + r_stem), in [-1, 1]
-    bool stemBroken = false, rootYielded = false;
+    bool stemBroken = false, rootYielded = false, rootFailed = false;
     // What the tree's own terms took from the first contact to the block leaving it (not what its
     // broken pieces dissipate later, falling on the soil), J.
     StemLedger duringImpact;

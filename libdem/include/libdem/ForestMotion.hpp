@@ -52,7 +52,7 @@ private:
         StemLoads loads;
         double stableStep;
         double lastBlockContact;  // time of the last block contact (or of waking)
-        bool broken;              // some connection broken (the step limit was recomputed)
+        bool broken;              // some connection broken or the root plate gone: its pieces fall
         bool moving;              // touched since woken; until then it stands still, is not stepped
                                   // and does not limit the time step
         mutable std::vector<double> contactOmega2;  // per node, from the contacts' springs (stableStep)

@@ -4,6 +4,8 @@
 // It is the trilinear hinge with K_Plast = 0, K_Unld = K_Elast and no rupture. The paper gives the
 // x and y axes only; the twist about the stem axis is held by a linear spring of the same K_Root,
 // so that a rubbing block cannot spin the whole tree in its soil (docs/model-stems.md).
+// Optionally the plate lets go at a failure rotation (winching tests: the resistance of a root plate
+// does not last for ever): from then on the foot is a pin and the root carries nothing.
 #include <Eigen/Core>
 
 #include "libdem/BendingLaw.hpp"
@@ -15,18 +17,23 @@ public:
     RootSpring(const RootSpringParams& p, BendingReading reading);
 
     // Follows an increment of the foot's rotation relative to the ground (x, y, z of the foot's
-    // frame, rad) and returns the plastic work it dissipated, J.
+    // frame, rad) and returns the energy the root dissipated, J: its plastic work and, when the plate
+    // lets go, the elastic energy it held.
     double rotate(const Eigen::Vector3d& dTheta);
 
     Eigen::Vector3d moment() const;  // N m: bending x, y (Eqs. 9-10) and twist z
     double storedEnergy() const;
     double stiffness() const { return stiffness_; }
     double yieldMoment() const { return bending_.coefficients().yieldMoment; }  // M_a, N m
+    bool failed() const { return failed_; }
 
 private:
     BendingLaw bending_;
     double stiffness_;
+    double failureRotation_;     // rad, of the foot: yield rotation M_a / K_Root plus the plateau's
+    double plasticRotation_ = 0; // rad, turned on the plateau at M_a
     double twistAngle_ = 0;
+    bool failed_ = false;
 };
 
 }  // namespace sylva::dem

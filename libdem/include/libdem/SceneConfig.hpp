@@ -79,6 +79,7 @@ struct SceneConfig {
     std::string sourceFile;     // the scene file, for messages
     TerrainConfig terrain;
     std::string forestFile;     // forest CSV (sylvarock generate's, or x,y,dbh_cm[,stool]); empty: no forest
+    std::string stemParameters = "calibrated";  // the named set the stem's defaults came from
     StemParams stem;
     StemContactParams stemContact;
     ForestActivity activity;

@@ -1,6 +1,8 @@
 #pragma once
 // Mechanical and discretisation parameters of a tree stem. Defaults are the paper's Table 2 (beech,
 // Sect. 2.1.2) as read in model-notes.md; the choices the paper leaves open are marked.
+#include <limits>
+
 namespace sylva::dem {
 
 // How Fig. 3 acts on the two bending axes (docs/model-stems.md argues the default).
@@ -41,6 +43,9 @@ struct RootSpringParams {
     double yieldMoment = 200e3;  // M_a, N m
     RootAnchorage anchorage = RootAnchorage::Fixed;
     double turningMomentPerKg = 120;  // C_reg, N m per kg of fresh stem, for RootAnchorage::StemWeight
+    // Rotation of the foot (rad) at which the root plate lets go and carries no moment any more;
+    // infinity: the paper's plateau at M_a without end.
+    double failureRotation = std::numeric_limits<double>::infinity();
 };
 
 struct StemParams {

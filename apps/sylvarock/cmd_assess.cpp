@@ -20,10 +20,11 @@ namespace {
 
 int runAssess(int argc, const char* const* argv) {
     po::options_description o("assess");
-    std::vector<std::string> stands;
+    std::vector<std::string> stands, sets;
     o.add_options()
         ("stand", po::value(&stands)->composing(), "stand inventory prefix: reads PREFIX_stems.csv and PREFIX_plots.csv (repeatable)")
         ("scene", po::value<std::string>(), "scene INI file without forest (terrain, block, contact laws, release)")
+        ("set", po::value(&sets)->composing(), "override a scene key: --set section.key=value (repeatable; e.g. --set stem.parameters=toe2018 for the paper's trees)")
         ("runs", po::value<int>()->default_value(100), "M: block runs per forest realisation")
         ("realisations", po::value<int>()->default_value(5), "K: virtual forests per stand and structure (A and NA)")
         ("baseline-runs", po::value<int>()->default_value(1000), "B: block runs without forest")
@@ -35,7 +36,7 @@ int runAssess(int argc, const char* const* argv) {
         ("resume", po::bool_switch(), "continue the campaign in --out: run only what is missing (same options required)");
     po::variables_map vm;
     if (!parse(argc, argv, o, vm,
-               "sylvarock assess --stand PREFIX [--stand PREFIX ...] --scene FILE.ini --out DIR [--runs M] "
+               "sylvarock assess --stand PREFIX [--stand PREFIX ...] --scene FILE.ini [--set KEY=VALUE ...] --out DIR [--runs M] "
                "[--realisations K] [--baseline-runs B] [--seed S] [--resume]",
                "  sylvarock assess --stand data/stands/GR1 --stand data/stands/PY1 --scene data/scenes/no-forest.ini \\\n"
                "      --runs 100 --realisations 5 --baseline-runs 1000 --seed 4 --out out/assess\n"
@@ -50,6 +51,7 @@ int runAssess(int argc, const char* const* argv) {
     assess::AssessmentOptions a;
     for (const auto& prefix : stands) a.design.stands.push_back(assess::standFromPrefix(prefix));
     a.design.sceneFile = vm["scene"].as<std::string>();
+    a.design.sceneOverrides = sets;
     a.design.runs = vm["runs"].as<int>();
     a.design.realisations = vm["realisations"].as<int>();
     a.design.baselineRuns = vm["baseline-runs"].as<int>();

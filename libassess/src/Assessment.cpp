@@ -21,7 +21,7 @@ AssessmentResults runAssessment(const AssessmentOptions& options) {
         throw InputError("--bootstrap must be at least 100 replicates, got " + std::to_string(options.bootstrapReplicates));
     if (options.outDir.empty()) throw InputError("--out DIR is required");
 
-    dem::SceneConfig sceneConfig = dem::loadScene(design.sceneFile);
+    dem::SceneConfig sceneConfig = dem::loadScene(design.sceneFile, design.sceneOverrides);
     if (!sceneConfig.forestFile.empty())
         throw InputError(design.sceneFile, 0, "the scene places a forest (" + sceneConfig.forestFile +
                                                   "); assess generates its own forests: give a scene without one");

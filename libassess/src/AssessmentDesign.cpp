@@ -56,8 +56,10 @@ std::string designText(const AssessmentDesign& d) {
     out << "# sylvarock assess: the design of the campaign in this directory (checked by --resume)\n"
         << "format = 1\nseed = " << d.seed << "\nruns_per_realisation = " << d.runs << "\nrealisations = " << d.realisations
         << "\nbaseline_runs = " << d.baselineRuns << "\n";
-    const dem::SceneConfig scene = dem::loadScene(d.sceneFile);
+    const dem::SceneConfig scene = dem::loadScene(d.sceneFile, d.sceneOverrides);
     out << fileLine("scene", d.sceneFile);
+    for (const auto& o : d.sceneOverrides) out << "scene_set = " << o << "\n";
+    out << "stem_parameters = " << scene.stemParameters << "\n";
     if (!scene.terrain.profile.empty()) out << fileLine("scene_profile", scene.terrain.profile);
     if (!scene.terrain.dtm.empty()) out << fileLine("scene_dtm", scene.terrain.dtm);
     out << "stands = " << d.stands.size() << "\n";

@@ -18,6 +18,13 @@ namespace sylva::assess {
 
 namespace {
 
+// " with --set a=1 --set b=2", or nothing.
+std::string setsText(const std::vector<std::string>& sets) {
+    std::string s;
+    for (const auto& o : sets) s += (s.empty() ? " with `--set " : " --set ") + o;
+    return s.empty() ? s : s + "`";
+}
+
 std::ofstream create(const std::string& path) {
     std::ofstream out(path, std::ios::trunc);
     if (!out) throw InputError(path, 0, "cannot write");
@@ -115,7 +122,7 @@ void writeMarkdown(const std::string& path, const AssessmentResults& res, const 
     auto md = create(path);
     const auto& d = res.design;
     md << "# Protection of the stands against rockfall (sylvarock assess)\n\n"
-       << "Scene `" << d.sceneFile << "`; seed " << d.seed << "; per stand and structure " << d.realisations
+       << "Scene `" << d.sceneFile << "`" << setsText(d.sceneOverrides) << "; seed " << d.seed << "; per stand and structure " << d.realisations
        << " virtual forest(s) of " << d.runs << " block runs each; " << d.baselineRuns << " runs without forest.\n\n"
        << "PF50 = 1 − Dist50(with forest) / Dist50(without forest) (Toe et al., Eq. 26), Dist50 the median run-out "
        << "along the slope of the pooled runs. The interval is a " << percent(res.bootstrap.confidence)
@@ -198,7 +205,11 @@ void writeResultsJson(const std::string& path, const AssessmentResults& res) {
     JsonWriter j(out);
     const auto& d = res.design;
     j.beginObject();
-    j.key("design").beginObject().field("scene", d.sceneFile).field("seed", static_cast<unsigned long long>(d.seed))
+    j.key("design").beginObject().field("scene", d.sceneFile);
+    j.key("scene_set").beginArray();
+    for (const auto& o : d.sceneOverrides) j.value(o);
+    j.endArray();
+    j.field("seed", static_cast<unsigned long long>(d.seed))
         .field("runs_per_realisation", d.runs).field("realisations", d.realisations).field("baseline_runs", d.baselineRuns)
         .field("bootstrap_replicates", res.bootstrap.replicates).field("confidence", res.bootstrap.confidence);
     j.key("stands").beginArray();

@@ -84,6 +84,18 @@ TEST_F(AssessCli, SecondRunNeedsResumeAndThenRedoesNothing) {
     EXPECT_EQ(slurp(root_ / "out/results.json"), first);
 }
 
+// --set changes the scene for the whole campaign; it is part of the design, so a resume that asks
+// for other trees is refused rather than mixing two models in one result.
+TEST_F(AssessCli, SceneOverridesArePartOfTheDesign) {
+    ASSERT_EQ(run(smallCampaign("out", 2) + " --set stem.parameters=toe2018"), 0) << err_;
+    EXPECT_TRUE(std::regex_search(slurp(root_ / "out/results.json"), std::regex("\"scene_set\": \\[\\s*\"stem.parameters=toe2018\"\\s*\\]")));
+    EXPECT_NE(slurp(root_ / "out/report/report.md").find("--set stem.parameters=toe2018"), std::string::npos);
+    EXPECT_EQ(run(smallCampaign("out", 2) + " --resume"), 2);
+    EXPECT_NE(err_.find("stem_parameters"), std::string::npos) << err_;
+    EXPECT_EQ(run(smallCampaign("o2", 2) + " --set stem.parameters=toe2017"), 2);
+    EXPECT_NE(err_.find("toe2017"), std::string::npos) << err_;
+}
+
 TEST_F(AssessCli, BadInputsAreClearErrors) {
     EXPECT_EQ(run("--stand " + (root_ / "nowhere/XX1").string() + " --scene x.ini --out " + (root_ / "o").string()), 2);
     EXPECT_NE(err_.find("XX1_stems.csv does not exist"), std::string::npos) << err_;

@@ -20,6 +20,7 @@ StandSource standFromPrefix(const std::string& prefix);
 struct AssessmentDesign {
     std::vector<StandSource> stands;
     std::string sceneFile;
+    std::vector<std::string> sceneOverrides;  // "section.key=value", over the scene file (--set)
     int runs = 100;            // M, block runs per forest realisation (the paper's 100)
     int realisations = 5;      // K, forests generated per stand and structure
     int baselineRuns = 1000;   // B, runs without forest
@@ -29,8 +30,9 @@ struct AssessmentDesign {
 // InputError for: no stand, two stands of one name, M, K or B below 1.
 void validate(const AssessmentDesign& design);
 
-// The design as text, one `key = value` per line: the counts, the seed, and each input file by name
-// and a fingerprint of its contents (scene file, its slope profile or DTM, each stand's two files).
+// The design as text, one `key = value` per line: the counts, the seed, the scene's overrides and
+// stem parameter set, and each input file by name and a fingerprint of its contents (scene file,
+// its slope profile or DTM, each stand's two files).
 // Paths are written as comments: moving the data does not change the design, editing it does.
 std::string designText(const AssessmentDesign& design);
 

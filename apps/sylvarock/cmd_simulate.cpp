@@ -29,7 +29,11 @@ void drawFigures(const std::string& dir, const dem::Scene& scene, const std::vec
     }
     std::ostringstream gp;
     gp << "set datafile separator ','\nset terminal svg size 800,500 dynamic\nset grid\nunset key\n"
-       << "set output '" << dir << "/runout_cdf.svg'\nset title 'Cumulative distribution of run-out'\n"
+       << "set yrange [0:1.02]\n";
+    // One run (a single-tree impact) or runs that all stop at one place: give the axis a width.
+    if (!runout.empty() && runout.front() == runout.back())
+        gp << "set xrange [" << runout.front() - 1 << ":" << runout.back() + 1 << "]\n";
+    gp << "set output '" << dir << "/runout_cdf.svg'\nset title 'Cumulative distribution of run-out'\n"
        << "set xlabel 'run-out along the slope (m)'\nset ylabel 'share of blocks stopped'\n"
        << "plot '" << dir << "/runout_cdf.csv' every ::1 using 1:2 with steps lw 2\n"
        << "set output '" << dir << "/stop_map.svg'\nset title 'Stop positions'\nset xlabel 'x (m)'\nset ylabel 'y (m)'\n"

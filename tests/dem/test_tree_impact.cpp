@@ -5,6 +5,7 @@
 #include <cmath>
 #include <iostream>
 #include <string>
+#include <utility>
 
 #include "libdem/BlockRun.hpp"
 #include "libstand/Allometry.hpp"
@@ -126,26 +127,29 @@ TEST(TreeImpact, BrokenPiecesLoseEnergyOnTheSoil) {
     EXPECT_GT(during, 0.0);
 }
 
-// The candidate converged stem (docs/model-stems.md: Fig. 3 on 3 sections, wood's constant loss
-// factor, the stem crushing under the block) on a 20 cm beech at 10 m/s: the tree's own terms over
-// the impact agree between 0.5 and 0.25 m within the issue's 10 %, and the block's exit energy
-// within 5 % of the impact energy (measured: 7.0 and 7.5 kJ, 49.8 and 47.6 kJ of 68 kJ). Under the
-// paper's hinge and Eqs. 7-8 the same impact gives 28.1 and 12.5 kJ.
-TEST(TreeImpact, CandidateStemModelAgreesAtHalfTheSpacing) {
-    const auto impact = [](const std::string& spacing) {
-        const RunResult r = launch({"tree.dbh_cm=20", "block.speed_m_s=10", "stem.sections=3", "stem.damping=constant_loss",
-                                    "tree_contact.crushing_strength_pa=3.7e6", "stem.node_spacing_m=" + spacing});
-        EXPECT_EQ(r.impacts.size(), 1u);
-        EXPECT_LT(r.energy.imbalance, 0.01);
-        return r.impacts.at(0);
-    };
-    const TreeImpact coarse = impact("0.5"), fine = impact("0.25");
-    const auto tree = [](const TreeImpact& i) {
-        const StemLedger& d = i.duringImpact;
-        return d.bendingPlasticity + d.bendingDamping + d.rootPlasticity + d.rupture;
-    };
-    std::cout << "tree over the impact: " << tree(coarse) << " J (0.5 m), " << tree(fine) << " J (0.25 m); block after "
-              << coarse.energyAfter << ", " << fine.energyAfter << " J\n";
-    EXPECT_NEAR(tree(coarse), tree(fine), 0.10 * tree(fine));
-    EXPECT_NEAR(coarse.energyAfter, fine.energyAfter, 0.05 * fine.energyBefore);
+// The default trees (stem.parameters = calibrated: Fig. 3 on 3 sections, wood's constant loss factor,
+// the stem crushing under the block, anchorage from the stem's weight letting go at 25 deg) give the
+// same impact at 0.5 and 0.25 m: the tree's own terms over the impact within the 5 % the issue asks of
+// the single-tree matrix, the block's exit energy within 5 % of the impact energy (measured: 20 cm at
+// 10 m/s 41.1 and 41.6 kJ, block 2.0 and 3.1 kJ of 68 kJ; 15 cm at 15 m/s 13.0 and 12.7 kJ, block
+// 126.6 and 129.2 kJ of 153 kJ). The paper's trees (toe2018) give 28.1 and 12.5 kJ for the first.
+TEST(TreeImpact, DefaultStemAgreesAtHalfTheSpacing) {
+    for (const auto& [dbh, speed] : {std::pair<const char*, const char*>{"20", "10"}, {"15", "15"}}) {
+        const auto impact = [&, dbh = dbh, speed = speed](const std::string& spacing) {
+            const RunResult r = launch({std::string("tree.dbh_cm=") + dbh, std::string("block.speed_m_s=") + speed,
+                                        "forest.piece_max_time_s=0", "stem.node_spacing_m=" + spacing});
+            EXPECT_EQ(r.impacts.size(), 1u);
+            EXPECT_LT(r.energy.imbalance, 0.01);
+            return r.impacts.at(0);
+        };
+        const TreeImpact coarse = impact("0.5"), fine = impact("0.25");
+        const auto tree = [](const TreeImpact& i) {
+            const StemLedger& d = i.duringImpact;
+            return d.bendingPlasticity + d.bendingDamping + d.rootPlasticity + d.rupture;
+        };
+        std::cout << dbh << " cm at " << speed << " m/s: tree over the impact " << tree(coarse) << " J (0.5 m), "
+                  << tree(fine) << " J (0.25 m); block after " << coarse.energyAfter << ", " << fine.energyAfter << " J\n";
+        EXPECT_NEAR(tree(coarse), tree(fine), 0.05 * tree(fine)) << dbh << " cm";
+        EXPECT_NEAR(coarse.energyAfter, fine.energyAfter, 0.05 * fine.energyBefore) << dbh << " cm";
+    }
 }

@@ -1,4 +1,5 @@
 // sylvarock: one executable, one subcommand per task (see Cli.hpp for how they register).
+#include <algorithm>
 #include <cstring>
 #include <iostream>
 
@@ -10,7 +11,9 @@ namespace {
 void printUsage(std::ostream& os) {
     os << "usage: sylvarock <command> [options]   (sylvarock <command> --help for each command's options)\n\n"
           "How well does a mountain forest protect what lies below it from rockfall?\n\nCommands:\n";
-    for (const auto& c : sylva::cli::commands()) os << "  " << c.name << std::string(12 - c.name.size(), ' ') << c.summary << "\n";
+    std::size_t width = 0;
+    for (const auto& c : sylva::cli::commands()) width = std::max(width, c.name.size());
+    for (const auto& c : sylva::cli::commands()) os << "  " << c.name << std::string(width + 2 - c.name.size(), ' ') << c.summary << "\n";
 }
 
 }  // namespace

@@ -1,0 +1,46 @@
+// The command line teaches itself: the top-level help lists every command, and each command's
+// --help exits cleanly. (A command name longer than the help's column once crashed the listing.)
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "../CliRun.hpp"
+
+using sylva::testing::runCli;
+
+namespace {
+
+// The command names printed by `sylvarock --help`: the first word of each indented line after "Commands:".
+std::vector<std::string> listedCommands(const std::string& help) {
+    std::vector<std::string> names;
+    std::istringstream lines(help.substr(help.find("Commands:")));
+    std::string line;
+    std::getline(lines, line);
+    while (std::getline(lines, line))
+        if (line.rfind("  ", 0) == 0) names.push_back(line.substr(2, line.find(' ', 2) - 2));
+    return names;
+}
+
+}  // namespace
+
+TEST(CliHelp, TopLevelHelpListsEveryCommandAndEachCommandsHelpWorks) {
+    const auto top = runCli("--help");
+    ASSERT_EQ(top.status, 0) << top.output;
+    const auto names = listedCommands(top.output);
+    for (const char* expected : {"assess", "calibrate-lumped", "generate", "simulate", "stats"})
+        EXPECT_NE(std::find(names.begin(), names.end(), expected), names.end()) << expected << " missing in\n" << top.output;
+    for (const auto& name : names) {
+        const auto help = runCli(name + " --help");
+        EXPECT_EQ(help.status, 0) << name << ":\n" << help.output;
+        EXPECT_NE(help.output.find("sylvarock " + name), std::string::npos) << name << ":\n" << help.output;
+    }
+}
+
+TEST(CliHelp, NoCommandOrAnUnknownOneIsAUsageError) {
+    EXPECT_EQ(runCli("").status, 2);
+    const auto unknown = runCli("simulat");
+    EXPECT_EQ(unknown.status, 2) << unknown.output;
+}

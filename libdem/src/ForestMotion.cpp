@@ -17,14 +17,8 @@ double potentialEnergy(const Stem& s, double g) {
     return e;
 }
 
-bool anyBroken(const Stem& s) {
-    for (std::size_t c = 0; c < s.connectionCount(); ++c)
-        if (s.broken(c)) return true;
-    return false;
-}
-
 // Broken or uprooted: parts of it fall and are followed until they rest.
-bool falling(const Stem& s) { return anyBroken(s) || s.root().failed(); }
+bool falling(const Stem& s) { return s.anyConnectionBroken() || s.root().failed(); }
 
 double horizontalDistance(const Vec3& a, const Vec3& b) { return (a - b).head<2>().norm(); }
 
@@ -94,11 +88,7 @@ void ForestMotion::wake(std::uint32_t tree, double t) {
         // Its frozen energy and its ledger go back with it.
         frozenElastic_ -= stem.elasticEnergy();
         frozenPotential_ -= potentialEnergy(stem, cfg_.gravity);
-        slept_.bendingPlasticity -= stem.ledger.bendingPlasticity;
-        slept_.bendingDamping -= stem.ledger.bendingDamping;
-        slept_.rootPlasticity -= stem.ledger.rootPlasticity;
-        slept_.rupture -= stem.ledger.rupture;
-        slept_.unloadingGain -= stem.ledger.unloadingGain;
+        slept_.addStem(stem.ledger, -1);
         asleep_.erase(slept);
     } else {
         injected_ += potentialEnergy(stem, cfg_.gravity) + stem.elasticEnergy();  // the stem enters the energy budget
@@ -131,29 +121,14 @@ void ForestMotion::detect(const RigidBody& block, const std::vector<Vec3>& centr
     }
     wakeNeighbours();
     detectBlockStem(block, centres, reachAhead);
-    for (auto& [tree, index] : openImpactOf_) {
-        impacts_[index].wasInContact = impacts_[index].inContact;
-        impacts_[index].inContact = false;
-    }
-    for (auto& touch : blockTouches_)
+    impacts_.beginStep();
+    for (const auto& touch : blockTouches_)
         if (touch.touching) {
             AwakeStem* a = awake(touch.tree);
             a->lastBlockContact = t;
-            if (!openImpactOf_.count(touch.tree)) openImpact(block, touch, t);
-            OpenImpact& i = impacts_[openImpactOf_.at(touch.tree)];
-            // A piece broken off the stem that falls on the block once it has left the tree is
-            // debris, not the impact: only the standing stem (piece 0) starts a new contact.
-            if (i.wasInContact || touch.piece == 0) i.inContact = true;
+            impacts_.touch(block, touch.tree, trees_.tree(touch.tree), touch.piece, touch.geometry.point, t, a->stem);
         }
-    // The block's state when its contact with a stem ends is the impact's "after" (a later contact
-    // with the standing stem, before it sleeps, moves it on).
-    for (auto& [tree, index] : openImpactOf_) {
-        OpenImpact& i = impacts_[index];
-        if (i.inContact || !i.wasInContact) continue;
-        i.record.speedAfter = block.velocity.norm();
-        i.record.energyAfter = block.kineticEnergy();
-        i.record.duringImpact = awake(tree)->stem.ledger.since(i.atFirstContact);
-    }
+    impacts_.endStep(block, [this](std::uint32_t tree) -> const Stem& { return awake(tree)->stem; });
     detectStemStem();
     detectStemSoil();
     setMovingWhereTouched();
@@ -541,18 +516,14 @@ void ForestMotion::sleep(const RigidBody& block, double t) {
         // Sleeping follows motion for broken stems: a falling top is not frozen mid-air.
         if (a.broken && t - a.lastBlockContact < cfg_.activity.pieceMaxTime && fastestNode(a.stem) > cfg_.activity.pieceRestSpeed)
             continue;
-        if (openImpactOf_.count(a.tree)) closeImpact(openImpactOf_.at(a.tree), block);
+        impacts_.close(a.tree, block, a.stem);
         Stem& s = a.stem;
         // Its vibration stops with it (the block is gone); that energy is booked, not lost silently.
         slept_.frozen += s.kineticEnergy();
         for (std::size_t i = 0; i < s.nodeCount(); ++i) s.velocity[i].setZero(), s.angularVelocity[i].setZero();
         frozenElastic_ += s.elasticEnergy();
         frozenPotential_ += potentialEnergy(s, cfg_.gravity);
-        slept_.bendingPlasticity += s.ledger.bendingPlasticity;
-        slept_.bendingDamping += s.ledger.bendingDamping;
-        slept_.rootPlasticity += s.ledger.rootPlasticity;
-        slept_.rupture += s.ledger.rupture;
-        slept_.unloadingGain += s.ledger.unloadingGain;
+        slept_.addStem(s.ledger);
         const std::uint32_t tree = a.tree;
         // Its springs on the soil and on neighbours go with it: their energy is booked as frozen.
         for (const auto& c : soilTouches_)
@@ -570,67 +541,13 @@ void ForestMotion::sleep(const RigidBody& block, double t) {
     }
 }
 
-void ForestMotion::openImpact(const RigidBody& block, const BlockStemTouch& touch, double t) {
-    const PlacedTree& p = trees_.tree(touch.tree);
-    TreeImpact r;
-    r.tree = p.id;
-    r.time = t;
-    r.speedBefore = block.velocity.norm();
-    r.energyBefore = block.kineticEnergy();
-    r.height = touch.geometry.point.z() - p.foot.z();
-    // Lateral offset of the block's centre from the stem's axis, across its horizontal motion,
-    // relative to the largest offset at which they can touch.
-    const Vec3 v(block.velocity.x(), block.velocity.y(), 0);
-    const Vec3 w = block.position - p.foot;
-    const double lateral = v.norm() > 0 ? (v.x() * w.y() - v.y() * w.x()) / v.norm() : 0;
-    r.eccentricity = std::clamp(lateral / (block.boundingRadius() + 0.5 * p.geometry.dbh), -1.0, 1.0);
-    openImpactOf_[touch.tree] = impacts_.size();
-    impacts_.push_back({r, true, true, false, awake(touch.tree)->stem.ledger});
-}
-
-void ForestMotion::closeImpact(std::size_t index, const RigidBody& block) {
-    OpenImpact& i = impacts_[index];
-    const bool touching = i.inContact;  // still touching when the run ends: "after" is now
-    for (std::uint32_t tree = 0; tree < trees_.size(); ++tree) {
-        if (trees_.tree(tree).id != i.record.tree) continue;
-        const Stem* s = nullptr;
-        for (const auto& a : awake_)
-            if (a.tree == tree) s = &a.stem;
-        if (!s && asleep_.count(tree)) s = &asleep_.at(tree);
-        if (s) {
-            i.record.stemBroken = anyBroken(*s);
-            i.record.rootYielded = s->ledger.rootPlasticity > 0;
-            i.record.rootFailed = s->root().failed();
-        }
-        if (touching) {
-            i.record.speedAfter = block.velocity.norm();
-            i.record.energyAfter = block.kineticEnergy();
-            if (s) i.record.duringImpact = s->ledger.since(i.atFirstContact);
-        }
-        openImpactOf_.erase(tree);
-        break;
-    }
-    i.open = false;
-}
-
 std::vector<TreeImpact> ForestMotion::finish(const RigidBody& block) {
-    std::vector<TreeImpact> out;
-    for (std::size_t k = 0; k < impacts_.size(); ++k) {
-        if (impacts_[k].open) closeImpact(k, block);
-        out.push_back(impacts_[k].record);
-    }
-    return out;
+    return impacts_.finish(block, [this](std::uint32_t tree) -> const Stem& { return awake(tree)->stem; });
 }
 
 ForestLedger ForestMotion::ledger() const {
     ForestLedger l = slept_;
-    for (const auto& a : awake_) {
-        l.bendingPlasticity += a.stem.ledger.bendingPlasticity;
-        l.bendingDamping += a.stem.ledger.bendingDamping;
-        l.rootPlasticity += a.stem.ledger.rootPlasticity;
-        l.rupture += a.stem.ledger.rupture;
-        l.unloadingGain += a.stem.ledger.unloadingGain;
-    }
+    for (const auto& a : awake_) l.addStem(a.stem.ledger);
     l.contactFriction = contactLedger_.friction;
     l.contactDamping = contactLedger_.contactDamping;
     l.contactCrushing = contactLedger_.crushing;

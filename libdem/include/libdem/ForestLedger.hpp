@@ -1,6 +1,8 @@
 #pragma once
 // Where the energy the forest took during a run went, J: the forest's part of the run's energy
 // budget (ForestMotion keeps it; RunResult reports it; energy.json writes it).
+#include "libdem/StemLedger.hpp"
+
 namespace sylva::dem {
 
 struct ForestLedger {
@@ -10,6 +12,15 @@ struct ForestLedger {
     double contactDamping = 0;   // the soil's dashpot under stems and broken pieces (Eqs. 14-16)
     double contactCrushing = 0;  // wood crushed under the block (tree_contact.crushing_strength_pa)
     double frozen = 0;           // kinetic energy of stems put to sleep while still vibrating
+
+    // Books a stem's own terms (sign +1), or takes them back (-1) when the stem is woken again.
+    void addStem(const StemLedger& s, double sign = 1) {
+        bendingPlasticity += sign * s.bendingPlasticity;
+        bendingDamping += sign * s.bendingDamping;
+        rootPlasticity += sign * s.rootPlasticity;
+        rupture += sign * s.rupture;
+        unloadingGain += sign * s.unloadingGain;
+    }
 };
 
 }  // namespace sylva::dem

@@ -11,6 +11,7 @@
 
 #include "libdem/BlockRun.hpp"
 #include "libdem/ForestLedger.hpp"
+#include "libdem/ImpactRecorder.hpp"
 #include "libdem/StableStep.hpp"
 #include "libdem/StemStepper.hpp"
 
@@ -89,14 +90,6 @@ private:
         ContactGeometry geometry;
         bool touching;
     };
-    struct OpenImpact {
-        TreeImpact record;
-        bool open;
-        bool inContact;     // the block touches the stem now; "after" is taken when this ends
-        bool wasInContact;  // ... and did at the previous step
-        StemLedger atFirstContact;  // the stem's ledger when the impact began
-    };
-
     void wake(std::uint32_t tree, double t);
     AwakeStem* awake(std::uint32_t tree);
     void wakeNeighbours();
@@ -106,8 +99,6 @@ private:
     void detectStemStem();
     void detectStemSoil();
     void setMovingWhereTouched();
-    void openImpact(const RigidBody& block, const BlockStemTouch& touch, double t);
-    void closeImpact(std::size_t index, const RigidBody& block);
     static Vec3 connectionVelocity(const Stem& s, std::size_t c, double t, const Vec3& point);
     static void applyToConnection(AwakeStem& a, std::size_t c, double t, const Vec3& point, const Vec3& force);
 
@@ -123,8 +114,7 @@ private:
     std::vector<BlockStemTouch> blockTouches_;
     std::vector<StemStemTouch> stemTouches_;
     std::vector<StemSoilTouch> soilTouches_;
-    std::vector<OpenImpact> impacts_;
-    std::unordered_map<std::uint32_t, std::size_t> openImpactOf_;  // tree -> index in impacts_
+    ImpactRecorder impacts_;
     std::vector<std::uint32_t> nearTrees_, nearSoil_, toWake_;
     std::vector<Eigen::AlignedBox3d> boxes_;  // per awake stem (listStemPairs)
     std::vector<ConnectionPair> stemPairs_;

@@ -62,6 +62,11 @@ public:
     double connectionDiameter(std::size_t c) const { return connections_[c].diameter; }  // D_con, between nodes c and c+1
     const ConnectionBeam& bending(std::size_t c) const { return connections_[c].bending; }
     bool broken(std::size_t c) const { return connections_[c].bending.broken(); }
+    bool anyConnectionBroken() const {
+        for (const auto& c : connections_)
+            if (c.bending.broken()) return true;
+        return false;
+    }
     const RootSpring& root() const { return root_; }
 
     // Lengthens the axial springs' rest lengths so that the straight stem, as built, carries its own

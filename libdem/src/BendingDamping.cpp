@@ -9,9 +9,22 @@ constexpr double kPi = 3.14159265358979323846;
 // Sum over branches one decade apart of omega tau / (1 + omega^2 tau^2), averaged over log(omega):
 // the integral of x / (1 + x^2) d(log10 x) = pi / (2 ln 10).
 const double kLossPerUnitBranchStiffness = kPi / (2 * std::log(10.0));
+
+const std::array<double, BendingDamping::kBranches> kRelaxationTimes = [] {
+    std::array<double, BendingDamping::kBranches> tau{};
+    for (int b = 0; b < BendingDamping::kBranches; ++b) tau[b] = BendingDamping::kTauMax * std::pow(10.0, -b);
+    return tau;
+}();
 }  // namespace
 
-double BendingDamping::relaxationTime(int branch) { return kTauMax * std::pow(10.0, -branch); }
+double BendingDamping::relaxationTime(int branch) { return kRelaxationTimes[branch]; }
+
+BendingDamping::Decay BendingDamping::decayOver(double dt) {
+    Decay d;
+    d.dt = dt;
+    for (int b = 0; b < kBranches; ++b) d.factor[b] = std::exp(-dt / kRelaxationTimes[b]);
+    return d;
+}
 
 BendingDamping::BendingDamping(const BendingParams& p, const HingeCoefficients& k) {
     for (auto& m : branch_) m.setZero();
@@ -25,7 +38,8 @@ BendingDamping::BendingDamping(const BendingParams& p, const HingeCoefficients& 
     }
 }
 
-BendingDamping::Step BendingDamping::advance(const Vec2& rate, double dt) {
+BendingDamping::Step BendingDamping::advance(const Vec2& rate, const Decay& d) {
+    const double dt = d.dt;
     Step s;
     if (viscosity_ > 0) {
         s.moment = viscosity_ * rate;  // Eqs. 7-8
@@ -40,8 +54,8 @@ BendingDamping::Step BendingDamping::advance(const Vec2& rate, double dt) {
     // and a spring that lags pumps energy in.
     double work = 0, storedChange = 0;
     for (int b = 0; b < kBranches; ++b) {
-        const double tau = relaxationTime(b);
-        const double decay = std::exp(-dt / tau);
+        const double tau = kRelaxationTimes[b];
+        const double decay = d.factor[b];
         const Vec2 settled = branchStiffness_ * tau * rate;  // m for a steady rate
         const Vec2 before = branch_[b];
         const Vec2 integral = settled * dt + (before - settled) * (tau * (1 - decay));

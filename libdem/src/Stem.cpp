@@ -125,6 +125,7 @@ void Stem::carryOwnWeight(double gravity) {
 }
 
 void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque, double dt) {
+    const BendingDamping::Decay decay = BendingDamping::decayOver(dt);
     double stored = 0;
     for (std::size_t c = 0; c < connections_.size(); ++c) {
         Connection& k = connections_[c];
@@ -154,7 +155,7 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         const Eigen::Matrix3d toTheta = inverseLeftJacobian(theta);
         const Eigen::Matrix3d ra = orientation[a].toRotationMatrix();
         const Vec3 rate = toTheta * (ra.transpose() * (angularVelocity[b] - angularVelocity[a]));
-        const BendingDamping::Step damped = k.damping.advance(rate.head<2>(), dt);
+        const BendingDamping::Step damped = k.damping.advance(rate.head<2>(), decay);
         ledger.bendingDamping += damped.dissipated;
         stored += k.damping.storedEnergy();
         const Vec2& damping = damped.moment;

@@ -34,8 +34,16 @@ public:
         Vec2 moment = Vec2::Zero();  // on the relative rotation (x, y), N m, at the step's end
         double dissipated = 0;       // J, >= 0
     };
-    // Over a step dt at the relative rotation rate `rate` (x, y of the connection frame, rad/s).
-    Step advance(const Vec2& rate, double dt);
+    // How much each branch's moment decays over a step dt: the same for every connection a step
+    // advances, so a stem computes it once per step rather than kBranches exponentials per connection.
+    struct Decay {
+        double dt = 0;
+        std::array<double, kBranches> factor{};  // exp(-dt / tau_b)
+    };
+    static Decay decayOver(double dt);
+    // Over a step at the relative rotation rate `rate` (x, y of the connection frame, rad/s).
+    Step advance(const Vec2& rate, const Decay& decay);
+    Step advance(const Vec2& rate, double dt) { return advance(rate, decayOver(dt)); }
     // Energy held by the Maxwell branches' springs, J (zero for the viscous law).
     double storedEnergy() const;
     // The connection broke: the branches let go; returns what they held, J.

@@ -3,7 +3,7 @@
 node spacings, through the CLI as a user runs it; writes a CSV and an SVG figure.
 
     python3 scripts/stem_matrix.py [--exe build/apps/sylvarock] [--spacings 0.5,0.25,0.125]
-        [--threads 2] [--set key=value ...] [--out docs/figures/stem-matrix]
+        [--threads 2] [--set key=value ...] [--volume-at-height 0.5:0.1] [--out docs/figures/stem-matrix]
 
 The tree's energy is that of the impact (energy.json impact_dissipated_j: bending plasticity,
 bending damping, root plasticity, rupture from first contact to the block leaving), so broken pieces
@@ -13,9 +13,10 @@ import argparse, concurrent.futures, csv, itertools, json, os, subprocess, sys, 
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TREE_TERMS = ("bending_plasticity", "bending_damping", "root_plasticity", "rupture")
+CROWN_SHARE = 0.40642  # L_C / H_T, the paper's Eq. 12
 
 
-def run_one(exe, extra, dbh, speed, height, ecc, h):
+def run_one(exe, extra, dbh, speed, height, ecc, h, volume):
     with tempfile.TemporaryDirectory() as out:
         cmd = [exe, "simulate", "--scene", os.path.join(ROOT, "data/scenes/single-tree.ini"),
                "--set", f"tree.dbh_cm={dbh}", "--set", f"block.speed_m_s={speed}",
@@ -23,6 +24,8 @@ def run_one(exe, extra, dbh, speed, height, ecc, h):
                "--set", f"stem.node_spacing_m={h}", "--set", "forest.piece_max_time_s=0", "--out", out]
         for kv in extra:
             cmd += ["--set", kv]
+        if volume:
+            cmd += ["--set", f"block.volume_m3={volume}"]
         start = time.process_time()
         r = subprocess.run(cmd, capture_output=True, text=True)
         if r.returncode:
@@ -31,8 +34,12 @@ def run_one(exe, extra, dbh, speed, height, ecc, h):
     if not j.get("impacts"):
         return {"impacts": 0}
     tree = sum(j["impact_dissipated_j"][k] for k in TREE_TERMS)
+    # Broken below its crown (Eq. 12: the crown is the top 0.40642 H_T), or only a whipped top
+    # snapping in the crown.
+    below_crown = j["break_height_m"] is not None and j["break_height_m"] < (1 - CROWN_SHARE) * j["stem_height_m"]
     return {"impacts": j["impacts"], "tree_j": tree, "before_j": j["kinetic_before_j"],
-            "after_j": j["kinetic_after_j"], "broken": int(j["stem_broken"]),
+            "after_j": j["kinetic_after_j"], "broken": int(j["stem_broken"]), "bole_broken": int(below_crown),
+            "break_m": "" if j["break_height_m"] is None else round(j["break_height_m"], 2),
             "root_failed": int(j.get("root_failed", False))}
 
 
@@ -46,14 +53,19 @@ def main():
     ap.add_argument("--eccentricities", default="0,0.5")
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--set", action="append", default=[], help="extra scene key=value for every run")
+    ap.add_argument("--volume-at-height", action="append", default=None, metavar="H:V",
+                    help="block volume V (m3) for the impacts at height H (m); default 0.5:0.1, as the scene's "
+                         "0.5 m3 cube (bounding radius 0.54 m) cannot fly with its centre 0.5 m up")
     ap.add_argument("--out", default=os.path.join(ROOT, "docs/figures/stem-matrix"))
     a = ap.parse_args()
     spacings = [float(x) for x in a.spacings.split(",")]
+    volumes = dict(x.split(":") for x in (a.volume_at_height if a.volume_at_height is not None else ["0.5:0.1"]))
+    volume_of = lambda height: next((v for hh, v in volumes.items() if float(hh) == float(height)), "")
     cases = list(itertools.product(*(a.__dict__[k].split(",") for k in ("dbh", "speeds", "heights", "eccentricities"))))
     jobs = [(c, h) for c in cases for h in spacings]
     results = {}
     with concurrent.futures.ThreadPoolExecutor(a.threads) as pool:
-        futures = {pool.submit(run_one, a.exe, a.set, *c, h): (c, h) for c, h in jobs}
+        futures = {pool.submit(run_one, a.exe, a.set, *c, h, volume_of(c[2])): (c, h) for c, h in jobs}
         for n, f in enumerate(concurrent.futures.as_completed(futures), 1):
             results[futures[f]] = f.result()
             print(f"\r{n}/{len(jobs)} runs", end="", file=sys.stderr, flush=True)
@@ -63,8 +75,9 @@ def main():
     for c in cases:
         r = [results[(c, h)] for h in spacings]
         row = dict(zip(("dbh_cm", "speed_m_s", "height_m", "eccentricity"), c))
+        row["block_m3"] = volume_of(c[2]) or "scene"
         for h, x in zip(spacings, r):
-            for k in ("tree_j", "after_j", "broken", "root_failed"):
+            for k in ("tree_j", "after_j", "broken", "break_m", "bole_broken", "root_failed"):
                 row[f"{k}@{h:g}"] = x.get(k, "")
         row["before_j"] = r[0].get("before_j", "")
         rows.append(row)
@@ -79,9 +92,12 @@ def main():
         row["tree_gap"], row["block_gap"] = round(dt, 4), round(db, 4)
         row["tree_gap_own"] = round(abs(a0["tree_j"] - a1["tree_j"]) / max(a1["tree_j"], 1.0), 4)
         row["same_outcome"] = int(a0["broken"] == a1["broken"] and a0["root_failed"] == a1["root_failed"])
+        row["same_bole"] = int(a0["bole_broken"] == a1["bole_broken"])
+        if a0["break_m"] != "" and a1["break_m"] != "":
+            row["break_shift_m"] = round(abs(a0["break_m"] - a1["break_m"]), 2)
     os.makedirs(os.path.dirname(a.out), exist_ok=True)
     with open(a.out + ".csv", "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()) + [k for k in ("tree_gap", "block_gap", "tree_gap_own", "same_outcome") if k not in rows[0]])
+        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()) + [k for k in ("tree_gap", "block_gap", "tree_gap_own", "same_outcome", "same_bole", "break_shift_m") if k not in rows[0]])
         w.writeheader()
         w.writerows(rows)
     gaps_t = sorted(r.get("tree_gap", 1) for r in rows)
@@ -97,7 +113,12 @@ def main():
           f"{within(gaps_own, 0.05)}/{len(rows)} within 5 %, {within(gaps_own, 0.10)}/{len(rows)} within 10 %")
     print(f"  block's exit energy: median gap {gaps_b[len(gaps_b)//2]:.3f}, worst {worst['block']:.3f}, "
           f"{within(gaps_b, 0.05)}/{len(rows)} within 5 %")
-    print(f"  same break / root-failure outcome: {same}/{len(rows)}")
+    print(f"  same outcome (stem broken or not, root plate let go or not): {same}/{len(rows)}")
+    shifts = sorted(r["break_shift_m"] for r in rows if "break_shift_m" in r)
+    if shifts:
+        print(f"  broken at both: lowest break moved by median {shifts[len(shifts)//2]:.2f} m, "
+              f"{within(shifts, 1.0)}/{len(shifts)} within 1 m; broken below the crown at one spacing only: "
+              f"{sum(1 for r in rows if r.get('same_bole') == 0)}/{len(rows)}")
     for p in problems:
         print("  problem:", p)
     plot(a.out, spacings, rows)

@@ -87,13 +87,19 @@ void writeRunsCsv(const std::string& path, const std::vector<RunResult>& runs) {
 void writeImpactsCsv(const std::string& path, const std::vector<RunResult>& runs) {
     auto out = openOut(path);
     out << "run,tree,time_s,speed_before_m_s,speed_after_m_s,energy_before_j,energy_after_j,impact_height_m,"
-           "eccentricity,stem_broken,root_yielded,root_failed\n";
+           "eccentricity,stem_broken,root_yielded,root_failed,break_height_m,stem_height_m\n";
     char buf[256];
     for (const auto& r : runs)
         for (const auto& i : r.impacts) {
-            std::snprintf(buf, sizeof buf, "%d,%ld,%.4f,%.4f,%.4f,%.1f,%.1f,%.3f,%.3f,%d,%d,%d\n", r.run, i.tree, i.time,
+            std::snprintf(buf, sizeof buf, "%d,%ld,%.4f,%.4f,%.4f,%.1f,%.1f,%.3f,%.3f,%d,%d,%d,", r.run, i.tree, i.time,
                           i.speedBefore, i.speedAfter, i.energyBefore, i.energyAfter, i.height, i.eccentricity,
                           i.stemBroken ? 1 : 0, i.rootYielded ? 1 : 0, i.rootFailed ? 1 : 0);
+            out << buf;
+            if (std::isfinite(i.breakHeight)) {  // empty when the stem did not break
+                std::snprintf(buf, sizeof buf, "%.2f", i.breakHeight);
+                out << buf;
+            }
+            std::snprintf(buf, sizeof buf, ",%.2f\n", i.stemHeight);
             out << buf;
         }
 }
@@ -110,6 +116,7 @@ void writeImpactEnergyJson(const std::string& path, const RunResult& r) {
         j.field("speed_before_m_s", i.speedBefore).field("speed_after_m_s", i.speedAfter);
         j.field("impact_height_m", i.height).field("eccentricity", i.eccentricity);
         j.field("stem_broken", i.stemBroken).field("root_yielded", i.rootYielded).field("root_failed", i.rootFailed);
+        j.field("break_height_m", i.breakHeight).field("stem_height_m", i.stemHeight);  // null: not broken
     } else {
         j.field("stem_broken", false).field("root_yielded", false).field("root_failed", false);
     }

@@ -57,6 +57,8 @@ void ImpactRecorder::close(std::uint32_t tree, const RigidBody& block, const Ste
 void ImpactRecorder::closeAt(std::size_t index, const RigidBody& block, const Stem& stem) {
     Impact& i = impacts_[index];
     i.record.stemBroken = stem.anyConnectionBroken();
+    i.record.breakHeight = stem.lowestBreakHeight();
+    i.record.stemHeight = stem.geometry().height;
     i.record.rootYielded = stem.ledger.rootPlasticity > 0;
     i.record.rootFailed = stem.root().failed();
     if (i.inContact) takeAfter(i, block, stem);  // still touching when the run ends: "after" is now

@@ -189,6 +189,12 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
     elasticEnergy_ = stored;
 }
 
+double Stem::lowestBreakHeight() const {
+    for (std::size_t c = 0; c < connections_.size(); ++c)
+        if (connections_[c].bending.broken()) return (c + 0.5) * length_;
+    return std::nan("");
+}
+
 double Stem::kineticEnergy() const {
     double e = 0;
     for (std::size_t i = 0; i < nodeCount(); ++i)

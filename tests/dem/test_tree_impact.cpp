@@ -75,11 +75,16 @@ TEST(TreeImpact, StemBreaksOnlyWhenTheBlockCarriesEnoughEnergy) {
     const RunResult below = launch(with(speedFor(0.5 * needed)));
     ASSERT_EQ(below.impacts.size(), 1u);
     EXPECT_FALSE(below.impacts[0].stemBroken) << "bound " << needed << " J";
+    EXPECT_TRUE(std::isnan(below.impacts[0].breakHeight)) << "no break, no break height";
     std::printf("energy to break a 25 cm stem hit at 0.55 m, elastic bound: %.0f J\n", needed);
     // Twenty times the bound: far beyond what the stem stores before rupture.
     const RunResult above = launch(with(speedFor(20 * needed)));
     ASSERT_EQ(above.impacts.size(), 1u);
     EXPECT_TRUE(above.impacts[0].stemBroken) << "bound " << needed << " J";
+    // Where it broke is recorded, on the stem (a connection's middle, so strictly inside it).
+    EXPECT_GT(above.impacts[0].breakHeight, 0.0);
+    EXPECT_LT(above.impacts[0].breakHeight, above.impacts[0].stemHeight);
+    EXPECT_NEAR(above.impacts[0].stemHeight, sylva::stand::treeHeightM(25), 1e-9) << "Eq. 11 for 25 cm";
 }
 
 // The impact's "after" is the block when it leaves the tree. A 15 cm stem hit at 10 m/s breaks;

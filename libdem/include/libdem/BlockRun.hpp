@@ -1,5 +1,6 @@
 #pragma once
 // One block released on the slope and followed until it rests, leaves the domain or runs out of time.
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -40,6 +41,8 @@ struct TreeImpact {
     double height = 0;          // above the stem's foot, m
     double eccentricity = 0;    // lateral offset of the block's centre from the stem axis / (r_block + r_stem), in [-1, 1]
     bool stemBroken = false, rootYielded = false, rootFailed = false;
+    double breakHeight = std::nan("");  // m above the foot, of the lowest break (NaN: not broken)
+    double stemHeight = 0;              // H_T, m: with breakHeight, tells a snapped top from a broken bole
     // What the tree's own terms took from the first contact to the block leaving it (not what its
     // broken pieces dissipate later, falling on the soil), J.
     StemLedger duringImpact;

@@ -67,6 +67,9 @@ public:
             if (c.bending.broken()) return true;
         return false;
     }
+    // Rest height above the foot of the middle of the lowest broken connection (NaN if none): a
+    // whipped top that snaps is not a stem broken at its foot.
+    double lowestBreakHeight() const;
     const RootSpring& root() const { return root_; }
 
     // Lengthens the axial springs' rest lengths so that the straight stem, as built, carries its own

@@ -42,6 +42,7 @@ CampaignSummary summarise(const std::vector<RunResult>& runs) {
         low += r.maxBounce <= 1.0;
         s.worstEnergyImbalance = std::max(s.worstEnergyImbalance, r.energy.imbalance);
         s.energyFlaggedRuns += r.energy.flagged;
+        s.forestEnergy.add(r.forestEnergy);
     }
     if (runout.empty()) return s;
     s.dist50 = quantile(runout, 0.5);
@@ -160,6 +161,16 @@ void writeSummaryJson(const std::string& path, const CampaignSummary& s, double 
     j.key("stop_reasons").beginObject();
     for (const auto& [k, v] : s.stopReasons) j.field(k, v);
     j.endObject();
+    // Where the energy the forest took went, over all runs; what was frozen when stems were put to
+    // sleep still vibrating must stay small next to the trees' own terms (issue 11, point 3).
+    const ForestLedger& f = s.forestEnergy;
+    j.key("forest_energy_j").beginObject();
+    j.field("bending_plasticity", f.bendingPlasticity).field("bending_damping", f.bendingDamping);
+    j.field("root_plasticity", f.rootPlasticity).field("rupture", f.rupture);
+    j.field("contact_friction", f.contactFriction).field("stem_soil_damping", f.contactDamping);
+    j.field("contact_crushing", f.contactCrushing).field("left_vibrating_in_stems", f.frozen);
+    j.endObject();
+    j.field("left_vibrating_share_of_tree_terms", f.treeTerms() > 0 ? f.frozen / f.treeTerms() : 0.0);
     j.endObject();
     out << "\n";
 }

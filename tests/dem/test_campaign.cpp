@@ -40,6 +40,24 @@ TEST(Campaign, QuantilesFollowGslsDefinition) {
     EXPECT_DOUBLE_EQ(quantile({0, 10}, 0.25), 2.5);
 }
 
+// The forest's energy is summed over the runs that did not fail (a failed run's ledger stops
+// mid-run), so that what was left vibrating in stems can be read against what the trees took.
+TEST(Campaign, ForestEnergyIsSummedOverTheRunsThatFinished) {
+    std::vector<RunResult> runs(3);
+    for (int k = 0; k < 3; ++k) {
+        runs[k].reason = StopReason::Rest;
+        runs[k].runoutAlongSlope = 100 + k;
+        runs[k].forestEnergy.bendingPlasticity = 1000 * (k + 1);
+        runs[k].forestEnergy.rupture = 10;
+        runs[k].forestEnergy.frozen = 100;
+    }
+    runs[2].reason = StopReason::Failed;
+    const CampaignSummary s = summarise(runs);
+    EXPECT_DOUBLE_EQ(s.forestEnergy.bendingPlasticity, 3000);
+    EXPECT_DOUBLE_EQ(s.forestEnergy.treeTerms(), 3020);
+    EXPECT_DOUBLE_EQ(s.forestEnergy.frozen, 200);
+}
+
 namespace {
 std::string slurp(const std::string& path) {
     std::ifstream in(path);

@@ -23,6 +23,7 @@ struct CampaignSummary {
     int energyFlaggedRuns = 0;  // runs whose budget did not close to integration.energy_warning
     int failedRuns = 0;         // stopped on a SimulationError: counted here, left out of every statistic above
     std::map<std::string, int> stopReasons;
+    ForestLedger forestEnergy;  // summed over the runs that did not fail, J
 };
 
 CampaignSummary summarise(const std::vector<RunResult>& runs);

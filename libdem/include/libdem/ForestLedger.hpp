@@ -13,6 +13,14 @@ struct ForestLedger {
     double contactCrushing = 0;  // wood crushed under the block (tree_contact.crushing_strength_pa)
     double frozen = 0;           // kinetic energy of stems put to sleep while still vibrating
 
+    // The tree's own terms: what the stems themselves took.
+    double treeTerms() const { return bendingPlasticity + bendingDamping + rootPlasticity + rupture; }
+    void add(const ForestLedger& o) {
+        bendingPlasticity += o.bendingPlasticity, bendingDamping += o.bendingDamping, rootPlasticity += o.rootPlasticity;
+        rupture += o.rupture, unloadingGain += o.unloadingGain, contactFriction += o.contactFriction;
+        contactDamping += o.contactDamping, contactCrushing += o.contactCrushing, frozen += o.frozen;
+    }
+
     // Books a stem's own terms (sign +1), or takes them back (-1) when the stem is woken again.
     void addStem(const StemLedger& s, double sign = 1) {
         bendingPlasticity += sign * s.bendingPlasticity;

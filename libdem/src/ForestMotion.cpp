@@ -185,7 +185,7 @@ Vec3 ForestMotion::connectionVelocity(const Stem& s, std::size_t c, double t, co
 // next detections (`approach`), so that their contact begins at the stem's step: at the block's
 // own step it would begin centimetres deep.
 void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec3>& centres, double approach) {
-    for (auto& touch : blockTouches_) touch.touching = false;
+    blockTouches_.beginDetection();
     const Vec3 omega = block.angularVelocity();
     for (auto& a : awake_) {
         const Stem& s = a.stem;
@@ -211,14 +211,11 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
                 if (overlap <= 0 || dist == 0) continue;
                 // One contact per (block sphere, stem piece): the deepest connection; its history
                 // moves with it from one connection to the next.
-                BlockStemTouch* touch = nullptr;
-                for (auto& bt : blockTouches_)
-                    if (bt.blockSphere == i && bt.tree == a.tree && bt.piece == piece) touch = &bt;
+                const ContactKey key{i, a.tree, piece, 0};
+                BlockStemTouch* touch = blockTouches_.find(key);
                 if (touch && touch->touching && touch->rawOverlap >= overlap) continue;
-                if (!touch) {
-                    blockTouches_.push_back(BlockStemTouch{i, a.tree, piece, c, t, overlap, startedAt(overlap), ContactGeometry{}, false, c, overlap});
-                    touch = &blockTouches_.back();
-                }
+                if (!touch)
+                    touch = &blockTouches_.add(key, BlockStemTouch{i, a.tree, piece, c, t, overlap, startedAt(overlap), ContactGeometry{}, false, c, overlap});
                 ContactGeometry& g = touch->geometry;
                 g.normal = d / dist;
                 g.overlap = std::max(0.0, overlap - touch->history.overlapOffset);
@@ -234,8 +231,7 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
             }
         }
     }
-    blockTouches_.erase(std::remove_if(blockTouches_.begin(), blockTouches_.end(), [](const BlockStemTouch& c) { return !c.touching; }),
-                        blockTouches_.end());
+    blockTouches_.sweep();
     // A contact that moved to another connection may find it much deeper in the block (a bent or
     // lying stem, a contact that began with an offset): like a new contact, it takes on only the
     // overlap one step's motion can bring, or its spring would store energy no motion loaded.
@@ -302,7 +298,7 @@ bool ForestMotion::stemPairsStale() const {
 }
 
 void ForestMotion::detectStemStem() {
-    for (auto& touch : stemTouches_) touch.touching = false;
+    stemTouches_.beginDetection();
     if (stemPairsStale()) listStemPairs();
     for (const ConnectionPair& pair : stemPairs_) {
         const AwakeStem& A = awake_[pair.a];
@@ -318,15 +314,13 @@ void ForestMotion::detectStemStem() {
         const double dist = d.norm();
         const double overlap = ra + rb - dist;
         if (overlap <= 0 || dist == 0) continue;
-        StemStemTouch* touch = nullptr;
         // Stem/stem contacts are frictionless (Table 2: phi_t-t = 0), so they carry no history worth
         // moving along the stems: one contact per pair of connections.
-        for (auto& st : stemTouches_)
-            if (st.treeA == A.tree && st.treeB == B.tree && st.connectionA == ca && st.connectionB == cb) touch = &st;
+        const ContactKey key{A.tree, B.tree, static_cast<std::uint32_t>(ca), static_cast<std::uint32_t>(cb)};
+        StemStemTouch* touch = stemTouches_.find(key);
         if (!touch) {
             const bool fused = fusedAtRest(trees_.tree(A.tree), ca, A.stem, trees_.tree(B.tree), cb, B.stem);
-            stemTouches_.push_back(StemStemTouch{A.tree, B.tree, ca, cb, s, t, startedAt(overlap), ContactGeometry{}, false, fused});
-            touch = &stemTouches_.back();
+            touch = &stemTouches_.add(key, StemStemTouch{A.tree, B.tree, ca, cb, s, t, startedAt(overlap), ContactGeometry{}, false, fused});
         }
         ContactGeometry& g = touch->geometry;
         g.normal = d / dist;
@@ -342,12 +336,11 @@ void ForestMotion::detectStemStem() {
         touch->t = t;
         touch->touching = true;
     }
-    stemTouches_.erase(std::remove_if(stemTouches_.begin(), stemTouches_.end(), [](const StemStemTouch& c) { return !c.touching; }),
-                       stemTouches_.end());
+    stemTouches_.sweep();
 }
 
 void ForestMotion::detectStemSoil() {
-    for (auto& touch : soilTouches_) touch.touching = false;
+    soilTouches_.beginDetection();
     const double rs = soil_.radius();
     for (const auto& a : awake_) {
         const Stem& s = a.stem;
@@ -362,13 +355,9 @@ void ForestMotion::detectStemSoil() {
                 const double dist = d.norm();
                 const double overlap = r + rs - dist;
                 if (overlap <= 0 || dist == 0) continue;
-                StemSoilTouch* touch = nullptr;
-                for (auto& st : soilTouches_)
-                    if (st.tree == a.tree && st.node == k && st.soil == id) touch = &st;
-                if (!touch) {
-                    soilTouches_.push_back(StemSoilTouch{a.tree, k, id, startedAt(overlap), ContactGeometry{}, false});
-                    touch = &soilTouches_.back();
-                }
+                const ContactKey key{a.tree, k, id, 0};
+                StemSoilTouch* touch = soilTouches_.find(key);
+                if (!touch) touch = &soilTouches_.add(key, StemSoilTouch{a.tree, k, id, startedAt(overlap), ContactGeometry{}, false});
                 ContactGeometry& g = touch->geometry;
                 g.normal = d / dist;
                 g.overlap = std::max(0.0, overlap - touch->history.overlapOffset);
@@ -382,8 +371,7 @@ void ForestMotion::detectStemSoil() {
             }
         }
     }
-    soilTouches_.erase(std::remove_if(soilTouches_.begin(), soilTouches_.end(), [](const StemSoilTouch& c) { return !c.touching; }),
-                       soilTouches_.end());
+    soilTouches_.sweep();
 }
 
 double ForestMotion::stableStep(const RigidBody& block, StableStep& blockStep) const {
@@ -530,11 +518,8 @@ void ForestMotion::sleep(const RigidBody& block, double t) {
             if (c.tree == tree) slept_.frozen += stemSoilLaw_->storedEnergy(c.geometry, c.history);
         for (const auto& c : stemTouches_)
             if (!c.ignored && (c.treeA == tree || c.treeB == tree)) slept_.frozen += stemStemLaw_->storedEnergy(c.geometry, c.history);
-        soilTouches_.erase(std::remove_if(soilTouches_.begin(), soilTouches_.end(), [tree](const StemSoilTouch& c) { return c.tree == tree; }),
-                           soilTouches_.end());
-        stemTouches_.erase(std::remove_if(stemTouches_.begin(), stemTouches_.end(),
-                                          [tree](const StemStemTouch& c) { return c.treeA == tree || c.treeB == tree; }),
-                           stemTouches_.end());
+        soilTouches_.eraseIf([tree](const StemSoilTouch& c) { return c.tree == tree; });
+        stemTouches_.eraseIf([tree](const StemStemTouch& c) { return c.treeA == tree || c.treeB == tree; });
         asleep_.emplace(tree, std::move(s));
         awake_.erase(awake_.begin() + static_cast<std::ptrdiff_t>(k));
         stemPairsStale_ = true;

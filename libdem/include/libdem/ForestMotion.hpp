@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "libdem/BlockRun.hpp"
+#include "libdem/ContactSet.hpp"
 #include "libdem/ForestLedger.hpp"
 #include "libdem/ImpactRecorder.hpp"
 #include "libdem/StableStep.hpp"
@@ -111,9 +112,9 @@ private:
     StemStepper stepper_;
     std::vector<AwakeStem> awake_;
     std::unordered_map<std::uint32_t, Stem> asleep_;  // stems woken before, kept as they were left
-    std::vector<BlockStemTouch> blockTouches_;
-    std::vector<StemStemTouch> stemTouches_;
-    std::vector<StemSoilTouch> soilTouches_;
+    ContactSet<BlockStemTouch> blockTouches_;
+    ContactSet<StemStemTouch> stemTouches_;
+    ContactSet<StemSoilTouch> soilTouches_;
     ImpactRecorder impacts_;
     std::vector<std::uint32_t> nearTrees_, nearSoil_, toWake_;
     std::vector<Eigen::AlignedBox3d> boxes_;  // per awake stem (listStemPairs)

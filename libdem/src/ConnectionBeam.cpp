@@ -43,6 +43,8 @@ ConnectionBeam::ConnectionBeam(const BendingParams& p, double diameterA, double 
         const HingeCoefficients& k = sectionK_[i] = bendingCoefficients(p, d, length);
         // Along the plastic branch dtheta = dM / K_Unld + d(plastic) and dM = K_Plast dtheta (Eqs. 3-4).
         hardening_[i] = k.plastic > 0 ? k.plastic * k.unloading / (k.unloading - k.plastic) : 0;
+        elasticCompliance_[i] = 1 / k.elastic;
+        unloadingCompliance_[i] = 1 / k.unloading;
         for (Channel& ch : channels_) ch.section[i] = Section{Moment::Zero(dim), k.yieldMoment};
     }
     for (Channel& ch : channels_) ch.mean = ch.change = Moment::Zero(dim);
@@ -70,7 +72,11 @@ void ConnectionBeam::solveForces(Channel& ch, const Moment& theta, const Moment&
         a -= r.weight[i] * ch.section[i].plastic;
         b -= r.weight[i] * r.xi[i] * ch.section[i].plastic;
     }
-    const Flexibility f = ch.flexibility = flexibility(ch);
+    if (ch.flexibilityStale) {
+        ch.flexibility = flexibility(ch);
+        ch.flexibilityStale = false;
+    }
+    const Flexibility f = ch.flexibility;
     const double det = f.mm * f.cc - f.mc * f.mc;
     ch.mean = (f.cc * a - f.mc * b) / det;
     ch.change = (f.mm * b - f.mc * a) / det;
@@ -97,12 +103,15 @@ HingeWork ConnectionBeam::deformChannel(Channel& ch, const Moment& theta, const 
     bool switched = false;
     for (int i = 0; i < n; ++i) {
         Section& s = ch.section[i];
-        const double softening = 1 / sectionK_[i].unloading - 1 / sectionK_[i].elastic;
+        if (s.yielded) continue;
         const Moment m = sectionMomentOf(i);
-        if (s.yielded || m.norm() <= s.yieldMoment) continue;
-        s.plastic -= softening * s.yieldMoment / m.norm() * m;
+        const double norm = m.norm();
+        if (norm <= s.yieldMoment) continue;
+        const double softening = 1 / sectionK_[i].unloading - 1 / sectionK_[i].elastic;
+        s.plastic -= softening * s.yieldMoment / norm * m;
         w.created += r.weight[i] * 0.5 * s.yieldMoment * s.yieldMoment * softening;
         s.yielded = switched = true;
+        ch.flexibilityStale = true;
     }
     if (switched) solveForces(ch, theta, eps);
 

@@ -64,19 +64,21 @@ private:
     struct Channel {
         std::array<Section, kMaxSections> section;
         Moment mean, change;  // M and dM
-        Flexibility flexibility;  // at the last solveForces
+        Flexibility flexibility;  // changes only when a section first yields
+        bool flexibilityStale = true;
     };
     HingeWork deformChannel(Channel& ch, const Moment& theta, const Moment& eps);
     Flexibility flexibility(const Channel& ch) const;
     void solveForces(Channel& ch, const Moment& theta, const Moment& eps) const;
     double channelEnergy(const Channel& ch) const;
-    double compliance(int i, const Section& s) const { return 1 / (s.yielded ? sectionK_[i].unloading : sectionK_[i].elastic); }
+    double compliance(int i, const Section& s) const { return s.yielded ? unloadingCompliance_[i] : elasticCompliance_[i]; }
 
     HingeCoefficients k_;
     double shearStiffness_, length_;
     const Rule* rule_;
     BendingReading reading_;
     std::array<HingeCoefficients, kMaxSections> sectionK_;
+    std::array<double, kMaxSections> elasticCompliance_, unloadingCompliance_;  // 1 / K_Elast, 1 / K_Unld per section
     std::array<double, kMaxSections> hardening_;  // dM / d(plastic rotation) along the plastic branch, N m/rad
     std::array<Channel, 2> channels_;
     Vec2 moment_ = Vec2::Zero(), change_ = Vec2::Zero();

@@ -100,20 +100,24 @@ def main():
         w = csv.DictWriter(f, fieldnames=list(rows[0].keys()) + [k for k in ("tree_gap", "block_gap", "tree_gap_own", "same_outcome", "same_bole", "break_shift_m") if k not in rows[0]])
         w.writeheader()
         w.writerows(rows)
-    gaps_t = sorted(r.get("tree_gap", 1) for r in rows)
-    gaps_b = sorted(r.get("block_gap", 1) for r in rows)
-    gaps_own = sorted(r.get("tree_gap_own", 1) for r in rows)
+    # Impacts that did not run at both spacings are listed as problems, not counted as gaps.
+    valid = [r for r in rows if "tree_gap" in r]
+    if not valid:
+        sys.exit("no impact ran at both of the first two spacings: " + "; ".join(problems))
+    gaps_t = sorted(r["tree_gap"] for r in valid)
+    gaps_b = sorted(r["block_gap"] for r in valid)
+    gaps_own = sorted(r["tree_gap_own"] for r in valid)
     within = lambda g, bar: sum(1 for x in g if x <= bar)
     same = sum(r.get("same_outcome", 0) for r in rows)
     h0, h1 = spacings[0], spacings[1]
-    print(f"{len(rows)} impacts, {h0:g} m against {h1:g} m (gaps relative to the impact energy):")
+    print(f"{len(valid)} of {len(rows)} impacts ran at both, {h0:g} m against {h1:g} m (gaps relative to the impact energy):")
     print(f"  tree's energy: median gap {gaps_t[len(gaps_t)//2]:.3f}, worst {worst['tree']:.3f}, "
-          f"{within(gaps_t, 0.05)}/{len(rows)} within 5 %")
+          f"{within(gaps_t, 0.05)}/{len(valid)} within 5 %")
     print(f"  tree's energy against itself: median gap {gaps_own[len(gaps_own)//2]:.3f}, "
-          f"{within(gaps_own, 0.05)}/{len(rows)} within 5 %, {within(gaps_own, 0.10)}/{len(rows)} within 10 %")
+          f"{within(gaps_own, 0.05)}/{len(valid)} within 5 %, {within(gaps_own, 0.10)}/{len(valid)} within 10 %")
     print(f"  block's exit energy: median gap {gaps_b[len(gaps_b)//2]:.3f}, worst {worst['block']:.3f}, "
-          f"{within(gaps_b, 0.05)}/{len(rows)} within 5 %")
-    print(f"  same outcome (stem broken or not, root plate let go or not): {same}/{len(rows)}")
+          f"{within(gaps_b, 0.05)}/{len(valid)} within 5 %")
+    print(f"  same outcome (stem broken or not, root plate let go or not): {same}/{len(valid)}")
     shifts = sorted(r["break_shift_m"] for r in rows if "break_shift_m" in r)
     if shifts:
         print(f"  broken at both: lowest break moved by median {shifts[len(shifts)//2]:.2f} m, "
@@ -121,7 +125,25 @@ def main():
               f"{sum(1 for r in rows if r.get('same_bole') == 0)}/{len(rows)}")
     for p in problems:
         print("  problem:", p)
+    print_by_height(rows, spacings)
     plot(a.out, spacings, rows)
+
+
+def print_by_height(rows, spacings):
+    """Each pair of successive spacings, impact height by impact height: where a spacing stops
+    resolving an impact (below its first node) shows up here."""
+    print("by impact height (gaps relative to the impact energy; tree | block: median, worst, within 5 %):")
+    for h0, h1 in zip(spacings, spacings[1:]):
+        for height in sorted({r["height_m"] for r in rows}, key=float):
+            sel = [r for r in rows if r["height_m"] == height and "" not in
+                   (r[f"tree_j@{h0:g}"], r[f"tree_j@{h1:g}"], r[f"after_j@{h0:g}"], r[f"after_j@{h1:g}"])]
+            if not sel:
+                continue
+            cols = []
+            for k in ("tree_j", "after_j"):
+                g = sorted(abs(r[f"{k}@{h0:g}"] - r[f"{k}@{h1:g}"]) / r["before_j"] for r in sel)
+                cols.append(f"{g[len(g) // 2]:.3f}, {g[-1]:.3f}, {sum(x <= 0.05 for x in g)}/{len(g)}")
+            print(f"  {h0:g} against {h1:g} m, {height} m high: {' | '.join(cols)}")
 
 
 def plot(out, spacings, rows):

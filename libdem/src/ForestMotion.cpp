@@ -20,8 +20,6 @@ double potentialEnergy(const Stem& s, double g) {
 // Broken or uprooted: parts of it fall and are followed until they rest.
 bool falling(const Stem& s) { return s.anyConnectionBroken() || s.root().failed(); }
 
-double horizontalDistance(const Vec3& a, const Vec3& b) { return (a - b).head<2>().norm(); }
-
 // History of a contact first seen at this overlap. Stems are checked against each other only
 // while awake, so a stem can be woken into a neighbour that already bent into it; the part of the
 // overlap no step's motion could explain (kMaxOnsetOverlap) becomes an offset the spring starts from.
@@ -32,12 +30,6 @@ ContactHistory startedAt(double overlap) {
     return h;
 }
 
-// Radius of a standing stem at its foot (the cone through the DBH at 1.3 m; Stem::diameterAt).
-double baseRadius(const PlacedTree& p) {
-    const double h = p.geometry.height;
-    return h > 1.3 ? 0.5 * p.geometry.dbh * h / (h - 1.3) : 0.5 * p.geometry.dbh;
-}
-
 // Stems of one stool stand so close that their cones meet near the foot: the connections of two
 // stems that overlap in the stems' rest shape are one fused stump, not a contact.
 bool fusedAtRest(const PlacedTree& a, std::size_t ca, const Stem& sa, const PlacedTree& b, std::size_t cb, const Stem& sb) {
@@ -45,7 +37,7 @@ bool fusedAtRest(const PlacedTree& a, std::size_t ca, const Stem& sa, const Plac
     const double za0 = a.foot.z() + ca * la, za1 = za0 + la, zb0 = b.foot.z() + cb * lb, zb1 = zb0 + lb;
     constexpr double kSameHeight = 1e-6;  // m: heights are sums of connection lengths, equal up to round-off
     if (za1 < zb0 - kSameHeight || zb1 < za0 - kSameHeight) return false;  // sharing an end height counts
-    return horizontalDistance(a.foot, b.foot) < 0.5 * (sa.connectionDiameter(ca) + sb.connectionDiameter(cb));
+    return (a.foot - b.foot).head<2>().norm() < 0.5 * (sa.connectionDiameter(ca) + sb.connectionDiameter(cb));
 }
 
 // What a spring along n at `point` sees of node i: 1/m + |r x n|^2 / I (r from the node's centre).
@@ -57,16 +49,10 @@ double nodeInverseMass(const Stem& s, std::size_t i, const Vec3& point, const Ve
 }
 
 
-double fastestNode(const Stem& s) {
-    double v2 = 0;
-    for (const Vec3& v : s.velocity) v2 = std::max(v2, v.squaredNorm());
-    return std::sqrt(v2);
-}
-
 }  // namespace
 
 ForestMotion::ForestMotion(const Scene& scene)
-    : cfg_(scene.config()), trees_(scene.trees()), soil_(scene.soil()), stepper_(Vec3(0, 0, -scene.config().gravity)) {
+    : cfg_(scene.config()), trees_(scene.trees()), soil_(scene.soil()), activity_(scene.config().activity), stepper_(Vec3(0, 0, -scene.config().gravity)) {
     if (empty()) return;
     blockStemLaw_ = &scene.laws().get(BodyKind::Block, BodyKind::Stem);
     stemStemLaw_ = &scene.laws().get(BodyKind::Stem, BodyKind::Stem);
@@ -109,15 +95,11 @@ void ForestMotion::detect(const RigidBody& block, const std::vector<Vec3>& centr
     } else {
         // Wake what the block's bounding sphere can reach before the next detection: its travel
         // over the next steps plus a margin, to the stem's surface (the base is the widest part).
-        const double reach = block.boundingRadius() + cfg_.activity.wakeMargin + reachAhead;
+        const double reach = activity_.blockReach(block, reachAhead);
         nearTrees_.clear();
         trees_.near(block.position.x(), block.position.y(), reach + 0.75 * trees_.thickest(), nearTrees_);
-        for (std::uint32_t i : nearTrees_) {
-            const PlacedTree& p = trees_.tree(i);
-            if (horizontalDistance(block.position, p.foot) > reach + baseRadius(p)) continue;
-            if (block.position.z() - block.boundingRadius() > p.foot.z() + p.geometry.height) continue;  // flying over
-            if (!awake(i)) wake(i, t);
-        }
+        for (std::uint32_t i : nearTrees_)
+            if (StemActivity::blockReaches(block, reach, trees_.tree(i)) && !awake(i)) wake(i, t);
     }
     wakeNeighbours();
     detectBlockStem(block, centres, reachAhead);
@@ -155,19 +137,13 @@ void ForestMotion::wakeNeighbours() {
         const Stem& s = a.stem;
         const PlacedTree& own = trees_.tree(a.tree);
         for (std::size_t i = 1; i < s.nodeCount(); ++i) {
+            if (!StemActivity::displaced(s, i, own)) continue;
             const Vec3& p = s.position[i];
-            if (horizontalDistance(p, own.foot) < 0.05) continue;  // still standing where it grew
-            const double r = 0.5 * s.diameterAt(s.restHeight(i));
-            const double reach = r + cfg_.activity.wakeMargin + s.velocity[i].norm() * lastDt_ * 2 * kNeighbourCheckInterval;
+            const double reach = activity_.nodeReach(s, i, lastDt_, kNeighbourCheckInterval);
             nearTrees_.clear();
             trees_.near(p.x(), p.y(), reach + 0.75 * trees_.thickest(), nearTrees_);
-            for (std::uint32_t j : nearTrees_) {
-                const PlacedTree& other = trees_.tree(j);
-                if (j == a.tree || awake(j)) continue;
-                if (horizontalDistance(p, other.foot) > reach + baseRadius(other)) continue;
-                if (p.z() > other.foot.z() + other.geometry.height + reach) continue;
-                toWake_.push_back(j);
-            }
+            for (std::uint32_t j : nearTrees_)
+                if (j != a.tree && !awake(j) && StemActivity::nodeReaches(p, reach, trees_.tree(j))) toWake_.push_back(j);
         }
     }
     std::sort(toWake_.begin(), toWake_.end());
@@ -491,19 +467,13 @@ void ForestMotion::integrate(double dt) {
 
 void ForestMotion::sleep(const RigidBody& block, double t) {
     if (empty() || cfg_.activity.allAwake) return;
-    const double reach = block.boundingRadius() + cfg_.activity.wakeMargin + 1.0;
     for (std::size_t k = awake_.size(); k-- > 0;) {
         AwakeStem& a = awake_[k];
-        const PlacedTree& p = trees_.tree(a.tree);
-        if (t - a.lastBlockContact < cfg_.activity.sleepAfter) continue;
-        if (horizontalDistance(block.position, p.foot) < reach + baseRadius(p)) continue;
+        if (!activity_.maySleep(block, trees_.tree(a.tree), a.stem, a.broken, a.lastBlockContact, t)) continue;
         bool leaning = false;  // on an awake neighbour
         for (const auto& st : stemTouches_)
             if (!st.ignored && (st.treeA == a.tree || st.treeB == a.tree)) leaning = true;
         if (leaning) continue;
-        // Sleeping follows motion for broken stems: a falling top is not frozen mid-air.
-        if (a.broken && t - a.lastBlockContact < cfg_.activity.pieceMaxTime && fastestNode(a.stem) > cfg_.activity.pieceRestSpeed)
-            continue;
         impacts_.close(a.tree, block, a.stem);
         Stem& s = a.stem;
         // Its vibration stops with it (the block is gone); that energy is booked, not lost silently.

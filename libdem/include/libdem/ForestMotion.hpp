@@ -3,7 +3,8 @@
 // then a stem is built into the simulation (woken), integrated while the block can touch it, and
 // put back to sleep once the block has left it (its deformed or broken shape is kept). A woken
 // stem stands in static equilibrium (Stem::carryOwnWeight) and is only stepped once something
-// touches it: the stiff stem time step is paid only while stems move.
+// touches it: the stiff stem time step is paid only while stems move. When a stem wakes and when
+// it may sleep is StemActivity's; what waking and sleeping do to the run's energy and contacts is here.
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <unordered_map>
@@ -14,6 +15,7 @@
 #include "libdem/ForestLedger.hpp"
 #include "libdem/ImpactRecorder.hpp"
 #include "libdem/StableStep.hpp"
+#include "libdem/StemActivity.hpp"
 #include "libdem/StemStepper.hpp"
 
 namespace sylva::dem {
@@ -106,6 +108,7 @@ private:
     const SceneConfig& cfg_;
     const TreeField& trees_;
     const SoilBed& soil_;
+    StemActivity activity_;
     const ContactLaw* blockStemLaw_ = nullptr;
     const ContactLaw* stemStemLaw_ = nullptr;
     const ContactLaw* stemSoilLaw_ = nullptr;

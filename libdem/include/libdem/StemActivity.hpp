@@ -1,0 +1,44 @@
+#pragma once
+// When a stem takes part in the run (ForestMotion wakes it, steps it, puts it back to sleep):
+// the criteria alone, apart from the bookkeeping that follows them. Sleeping follows motion, as in
+// Jolt: a stem joins when the block (or a displaced neighbour) can reach it before the next check,
+// and leaves once the block has gone and, if it is broken, its pieces have come to rest.
+#include <cstddef>
+
+#include "libdem/RigidBody.hpp"
+#include "libdem/SceneConfig.hpp"
+#include "libdem/Stem.hpp"
+#include "libdem/TreeField.hpp"
+
+namespace sylva::dem {
+
+class StemActivity {
+public:
+    explicit StemActivity(const ForestActivity& cfg) : cfg_(cfg) {}
+
+    // How far from its centre the block can touch something before the next detection: its
+    // bounding sphere, the margin and its travel until then.
+    double blockReach(const RigidBody& block, double travelAhead) const;
+    // The block, within `reach` (blockReach), can touch this standing tree: near its base (the
+    // widest part) and not flying over its top.
+    static bool blockReaches(const RigidBody& block, double reach, const PlacedTree& tree);
+
+    // A node of an awake stem that has left the spot where its tree grew (bent or broken) and may
+    // touch a neighbour the block never came near.
+    static bool displaced(const Stem& s, std::size_t node, const PlacedTree& own);
+    // How far that node can touch before the next neighbour check, `stepsBetweenChecks` steps of
+    // dt away: its radius, the margin and twice its travel.
+    double nodeReach(const Stem& s, std::size_t node, double dt, int stepsBetweenChecks) const;
+    static bool nodeReaches(const Vec3& node, double reach, const PlacedTree& other);
+
+    // The stem may go back to sleep: the block left it `sleepAfter` ago and is out of reach, and a
+    // broken stem's pieces are at rest (or rolled on for `pieceMaxTime`). Whether an awake
+    // neighbour leans on it is the caller's to check.
+    bool maySleep(const RigidBody& block, const PlacedTree& tree, const Stem& s, bool broken, double lastBlockContact,
+                  double t) const;
+
+private:
+    const ForestActivity& cfg_;
+};
+
+}  // namespace sylva::dem

@@ -1,0 +1,64 @@
+#include "libdem/StemActivity.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sylva::dem {
+
+namespace {
+
+double horizontalDistance(const Vec3& a, const Vec3& b) { return (a - b).head<2>().norm(); }
+
+// Radius of a standing stem at its foot (the cone through the DBH at 1.3 m; Stem::diameterAt).
+double baseRadius(const PlacedTree& p) {
+    const double h = p.geometry.height;
+    return h > 1.3 ? 0.5 * p.geometry.dbh * h / (h - 1.3) : 0.5 * p.geometry.dbh;
+}
+
+double fastestNode(const Stem& s) {
+    double v2 = 0;
+    for (const Vec3& v : s.velocity) v2 = std::max(v2, v.squaredNorm());
+    return std::sqrt(v2);
+}
+
+// A stem sleeps only this far beyond the block's waking reach, so that one does not wake and
+// sleep it step after step at the edge.
+constexpr double kSleepHysteresis = 1.0;  // m
+
+// A node closer than this to its tree's foot still stands where the tree grew.
+constexpr double kStandingTolerance = 0.05;  // m
+
+}  // namespace
+
+double StemActivity::blockReach(const RigidBody& block, double travelAhead) const {
+    return block.boundingRadius() + cfg_.wakeMargin + travelAhead;
+}
+
+bool StemActivity::blockReaches(const RigidBody& block, double reach, const PlacedTree& tree) {
+    if (horizontalDistance(block.position, tree.foot) > reach + baseRadius(tree)) return false;
+    return !(block.position.z() - block.boundingRadius() > tree.foot.z() + tree.geometry.height);
+}
+
+bool StemActivity::displaced(const Stem& s, std::size_t node, const PlacedTree& own) {
+    return !(horizontalDistance(s.position[node], own.foot) < kStandingTolerance);
+}
+
+double StemActivity::nodeReach(const Stem& s, std::size_t node, double dt, int stepsBetweenChecks) const {
+    const double r = 0.5 * s.diameterAt(s.restHeight(node));
+    return r + cfg_.wakeMargin + s.velocity[node].norm() * dt * 2 * stepsBetweenChecks;
+}
+
+bool StemActivity::nodeReaches(const Vec3& node, double reach, const PlacedTree& other) {
+    if (horizontalDistance(node, other.foot) > reach + baseRadius(other)) return false;
+    return !(node.z() > other.foot.z() + other.geometry.height + reach);
+}
+
+bool StemActivity::maySleep(const RigidBody& block, const PlacedTree& tree, const Stem& s, bool broken,
+                            double lastBlockContact, double t) const {
+    if (t - lastBlockContact < cfg_.sleepAfter) return false;
+    if (horizontalDistance(block.position, tree.foot) < blockReach(block, kSleepHysteresis) + baseRadius(tree)) return false;
+    // A falling top is not frozen mid-air.
+    return !(broken && t - lastBlockContact < cfg_.pieceMaxTime && fastestNode(s) > cfg_.pieceRestSpeed);
+}
+
+}  // namespace sylva::dem

@@ -1,0 +1,87 @@
+// When a stem joins the run and when it leaves it (StemActivity): the block wakes what it can
+// reach and nothing it flies over; a stem sleeps only once the block has gone, and a broken one
+// only once its pieces rest.
+#include <gtest/gtest.h>
+
+#include "libdem/StemActivity.hpp"
+
+using namespace sylva::dem;
+
+namespace {
+
+// A 20 cm beech at the origin, on flat ground at z = 0.
+PlacedTree tree20() { return PlacedTree{1, Vec3::Zero(), beechStem(20), StemFoot::RootSpring}; }
+
+// A single sphere of 0.5 m radius: its bounding radius is 0.5 m.
+RigidBody ball(const Vec3& at) {
+    RigidBody b(1000, Vec3(100, 100, 100), {ClumpSphere{Vec3::Zero(), 0.5}});
+    b.position = at;
+    return b;
+}
+
+}  // namespace
+
+TEST(StemActivity, BlockWakesWhatItCanReachBeforeTheNextCheckAndNothingItFliesOver) {
+    ForestActivity cfg;
+    cfg.wakeMargin = 0.1;
+    const StemActivity activity(cfg);
+    const PlacedTree t = tree20();
+    const double base = 0.5 * t.geometry.dbh * t.geometry.height / (t.geometry.height - 1.3);  // the cone at the foot
+    const RigidBody b = ball(Vec3(2, 0, 0.5));
+    EXPECT_DOUBLE_EQ(activity.blockReach(b, 0.3), 0.5 + 0.1 + 0.3);
+    // 2 m away: reached only when the block's travel before the next check closes the gap.
+    EXPECT_FALSE(StemActivity::blockReaches(b, activity.blockReach(b, 0.0), t));
+    EXPECT_TRUE(StemActivity::blockReaches(b, activity.blockReach(b, 2.0 - 0.6 - base + 1e-9), t));
+    EXPECT_FALSE(StemActivity::blockReaches(b, activity.blockReach(b, 2.0 - 0.6 - base - 1e-6), t));
+    // Right beside it but with its lowest point above the top: flying over.
+    const RigidBody over = ball(Vec3(0.3, 0, t.geometry.height + 0.6));
+    EXPECT_FALSE(StemActivity::blockReaches(over, activity.blockReach(over, 0.0), t));
+    const RigidBody grazing = ball(Vec3(0.3, 0, t.geometry.height + 0.4));
+    EXPECT_TRUE(StemActivity::blockReaches(grazing, activity.blockReach(grazing, 0.0), t));
+}
+
+TEST(StemActivity, StemSleepsOnlyOnceTheBlockHasGoneAndItsPiecesRest) {
+    ForestActivity cfg;
+    cfg.sleepAfter = 0.3;
+    cfg.pieceRestSpeed = 0.2;
+    cfg.pieceMaxTime = 10;
+    const StemActivity activity(cfg);
+    const PlacedTree t = tree20();
+    Stem s(t.geometry, StemParams{}, t.foot, t.support);
+    const RigidBody near = ball(Vec3(1.5, 0, 0.5)), gone = ball(Vec3(20, 0, 0.5));
+    // The block left 1 s ago.
+    EXPECT_TRUE(activity.maySleep(gone, t, s, false, 0.0, 1.0));
+    EXPECT_FALSE(activity.maySleep(gone, t, s, false, 0.0, 0.2)) << "before sleepAfter";
+    EXPECT_FALSE(activity.maySleep(near, t, s, false, 0.0, 1.0)) << "block still within reach";
+    // A broken stem whose top still falls at 3 m/s.
+    s.velocity.back() = Vec3(0, 0, -3);
+    EXPECT_TRUE(activity.maySleep(gone, t, s, false, 0.0, 1.0)) << "a whole stem's sway does not hold it";
+    EXPECT_FALSE(activity.maySleep(gone, t, s, true, 0.0, 1.0)) << "a falling top is not frozen mid-air";
+    EXPECT_TRUE(activity.maySleep(gone, t, s, true, 0.0, 10.5)) << "a piece rolling on is let go after pieceMaxTime";
+    s.velocity.back() = Vec3(0, 0, -0.1);
+    EXPECT_TRUE(activity.maySleep(gone, t, s, true, 0.0, 1.0)) << "pieces at rest";
+}
+
+TEST(StemActivity, DisplacedNodeWakesTheNeighboursItCanTouch) {
+    ForestActivity cfg;
+    cfg.wakeMargin = 0.1;
+    const StemActivity activity(cfg);
+    const PlacedTree own = tree20();
+    Stem s(own.geometry, StemParams{}, own.foot, own.support);
+    const std::size_t i = s.nodeCount() / 2;
+    EXPECT_FALSE(StemActivity::displaced(s, i, own)) << "standing where it grew";
+    s.position[i] += Vec3(2, 0, 0);
+    EXPECT_TRUE(StemActivity::displaced(s, i, own));
+    // At rest its reach is its radius and the margin; moving at 4 m/s, twice its travel is added.
+    const double r = 0.5 * s.diameterAt(s.restHeight(i));
+    EXPECT_DOUBLE_EQ(activity.nodeReach(s, i, 1e-4, 10), r + 0.1);
+    s.velocity[i] = Vec3(4, 0, 0);
+    EXPECT_NEAR(activity.nodeReach(s, i, 1e-4, 10), r + 0.1 + 4 * 1e-4 * 2 * 10, 1e-12);
+    PlacedTree other = tree20();
+    other.foot = Vec3(3, 0, 0);
+    const Vec3& p = s.position[i];
+    EXPECT_TRUE(StemActivity::nodeReaches(p, 1.0, other));
+    EXPECT_FALSE(StemActivity::nodeReaches(p, 0.5, other));
+    other.foot = Vec3(2, 0, -(other.geometry.height + 2 + p.z()));  // on a terrace below, its top under the node
+    EXPECT_FALSE(StemActivity::nodeReaches(p, 1.0, other));
+}

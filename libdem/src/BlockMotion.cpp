@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "libdem/SimulationError.hpp"
+#include "libdem/SphereContact.hpp"
 #include "libdem/StableStep.hpp"
 #include "libstand/InputError.hpp"
 
@@ -124,7 +125,7 @@ void BlockMotion::updateCentres() {
 
 // Pairs block sphere / soil sphere that overlap now; histories of pairs that stay in touch carry over.
 void BlockMotion::detectContacts() {
-    for (auto& c : touches_) c.touching = false;
+    touches_.beginDetection();
     candidates_.clear();
     const double rs = soil_.radius();
     soil_.near(block_.position, block_.boundingRadius() + rs, candidates_);
@@ -133,33 +134,18 @@ void BlockMotion::detectContacts() {
         const Vec3 cs = soil_.center(s);
         for (std::uint32_t i = 0; i < worldCentres_.size(); ++i) {
             const double rb = block_.spheres()[i].radius;
-            const Vec3 d = worldCentres_[i] - cs;
-            const double dist2 = d.squaredNorm();
-            if (dist2 >= (rb + rs) * (rb + rs)) continue;
-            const double dist = std::sqrt(dist2);
             ContactGeometry g;
-            g.normal = d / dist;
-            g.overlap = rb + rs - dist;
-            g.point = cs + g.normal * (rs - 0.5 * g.overlap);
+            if (!touchSpheres(worldCentres_[i], rb, cs, rs, g)) continue;
             g.relativeVelocity = block_.velocity + omega.cross(g.point - block_.position);
             g.meanSpinNormal = 0.5 * omega.dot(g.normal);  // the soil does not spin
-            g.radiusA = rb;
-            g.radiusB = rs;
-            touch(i, s).geometry = g;
+            const ContactKey key{i, s, 0, 0};
+            SoilTouch* touch = touches_.find(key);
+            if (!touch) touch = &touches_.add(key, SoilTouch{i, s, ContactHistory{}, ContactGeometry{}, false});
+            touch->geometry = g;
+            touch->touching = true;
         }
     }
-    touches_.erase(std::remove_if(touches_.begin(), touches_.end(), [](const SoilTouch& c) { return !c.touching; }),
-                   touches_.end());
-}
-
-BlockMotion::SoilTouch& BlockMotion::touch(std::uint32_t blockSphere, std::uint32_t soilSphere) {
-    for (auto& c : touches_)
-        if (c.blockSphere == blockSphere && c.soilSphere == soilSphere) {
-            c.touching = true;
-            return c;
-        }
-    touches_.push_back(SoilTouch{blockSphere, soilSphere, ContactHistory{}, ContactGeometry{}, true});
-    return touches_.back();
+    touches_.sweep();
 }
 
 // The stable step of the springs acting now, plus room for `anticipatedContacts` new soil ones; while

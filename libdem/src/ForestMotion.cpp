@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "libdem/SegmentGeometry.hpp"
+#include "libdem/SphereContact.hpp"
 
 namespace sylva::dem {
 
@@ -179,12 +180,11 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
             for (std::uint32_t i = 0; i < centres.size(); ++i) {
                 const double rb = block.spheres()[i].radius;
                 const double t = closestOnSegment(centres[i], a0, a1);
-                const Vec3 q = a0 + t * (a1 - a0);
-                const Vec3 d = centres[i] - q;
-                const double dist = d.norm();
-                const double overlap = rb + r - dist;
+                ContactGeometry found;
+                const bool touching = touchSpheres(centres[i], rb, a0 + t * (a1 - a0), r, found);
+                const double overlap = found.overlap;
                 if (overlap > -approach) a.moving = true;
-                if (overlap <= 0 || dist == 0) continue;
+                if (!touching) continue;
                 // One contact per (block sphere, stem piece): the deepest connection; its history
                 // moves with it from one connection to the next.
                 const ContactKey key{i, a.tree, piece, 0};
@@ -193,13 +193,10 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
                 if (!touch)
                     touch = &blockTouches_.add(key, BlockStemTouch{i, a.tree, piece, c, t, overlap, startedAt(overlap), ContactGeometry{}, false, c, overlap});
                 ContactGeometry& g = touch->geometry;
-                g.normal = d / dist;
+                g = found;
                 g.overlap = std::max(0.0, overlap - touch->history.overlapOffset);
-                g.point = q + g.normal * (r - 0.5 * overlap);
                 g.relativeVelocity = block.velocity + omega.cross(g.point - block.position) - connectionVelocity(s, c, t, g.point);
                 g.meanSpinNormal = 0.5 * (omega + (1 - t) * s.angularVelocity[c] + t * s.angularVelocity[c + 1]).dot(g.normal);
-                g.radiusA = rb;
-                g.radiusB = r;
                 touch->connection = c;
                 touch->t = t;
                 touch->rawOverlap = overlap;
@@ -285,11 +282,9 @@ void ForestMotion::detectStemStem() {
         const Vec3 &b0 = B.stem.position[cb], &b1 = B.stem.position[cb + 1];
         const double ra = 0.5 * A.stem.connectionDiameter(ca), rb = 0.5 * B.stem.connectionDiameter(cb);
         const auto [s, t] = closestBetweenSegments(a0, a1, b0, b1);
-        const Vec3 pa = a0 + s * (a1 - a0), pb = b0 + t * (b1 - b0);
-        const Vec3 d = pa - pb;
-        const double dist = d.norm();
-        const double overlap = ra + rb - dist;
-        if (overlap <= 0 || dist == 0) continue;
+        ContactGeometry found;
+        if (!touchSpheres(a0 + s * (a1 - a0), ra, b0 + t * (b1 - b0), rb, found)) continue;
+        const double overlap = found.overlap;
         // Stem/stem contacts are frictionless (Table 2: phi_t-t = 0), so they carry no history worth
         // moving along the stems: one contact per pair of connections.
         const ContactKey key{A.tree, B.tree, static_cast<std::uint32_t>(ca), static_cast<std::uint32_t>(cb)};
@@ -299,15 +294,12 @@ void ForestMotion::detectStemStem() {
             touch = &stemTouches_.add(key, StemStemTouch{A.tree, B.tree, ca, cb, s, t, startedAt(overlap), ContactGeometry{}, false, fused});
         }
         ContactGeometry& g = touch->geometry;
-        g.normal = d / dist;
+        g = found;
         g.overlap = std::max(0.0, overlap - touch->history.overlapOffset);
-        g.point = pb + g.normal * (rb - 0.5 * overlap);
         g.relativeVelocity = connectionVelocity(A.stem, ca, s, g.point) - connectionVelocity(B.stem, cb, t, g.point);
         g.meanSpinNormal = 0.5 * ((1 - s) * A.stem.angularVelocity[ca] + s * A.stem.angularVelocity[ca + 1] +
                                   (1 - t) * B.stem.angularVelocity[cb] + t * B.stem.angularVelocity[cb + 1])
                                      .dot(g.normal);
-        g.radiusA = ra;
-        g.radiusB = rb;
         touch->s = s;
         touch->t = t;
         touch->touching = true;
@@ -327,21 +319,17 @@ void ForestMotion::detectStemSoil() {
             nearSoil_.clear();
             soil_.near(p, r + rs, nearSoil_);
             for (std::uint32_t id : nearSoil_) {
-                const Vec3 d = p - soil_.center(id);
-                const double dist = d.norm();
-                const double overlap = r + rs - dist;
-                if (overlap <= 0 || dist == 0) continue;
+                ContactGeometry found;
+                if (!touchSpheres(p, r, soil_.center(id), rs, found)) continue;
+                const double overlap = found.overlap;
                 const ContactKey key{a.tree, k, id, 0};
                 StemSoilTouch* touch = soilTouches_.find(key);
                 if (!touch) touch = &soilTouches_.add(key, StemSoilTouch{a.tree, k, id, startedAt(overlap), ContactGeometry{}, false});
                 ContactGeometry& g = touch->geometry;
-                g.normal = d / dist;
+                g = found;
                 g.overlap = std::max(0.0, overlap - touch->history.overlapOffset);
-                g.point = soil_.center(id) + g.normal * (rs - 0.5 * overlap);
                 g.relativeVelocity = s.velocity[k] + s.angularVelocity[k].cross(g.point - p);
                 g.meanSpinNormal = 0.5 * s.angularVelocity[k].dot(g.normal);
-                g.radiusA = r;
-                g.radiusB = rs;
                 g.movingMass = s.mass()[k];  // the soil sphere does not move
                 touch->touching = true;
             }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "libdem/BlockRun.hpp"
+#include "libdem/ContactSet.hpp"
 #include "libdem/ForestMotion.hpp"
 
 namespace sylva::dem {
@@ -42,7 +43,6 @@ private:
 
     void updateCentres();
     void detectContacts();
-    SoilTouch& touch(std::uint32_t blockSphere, std::uint32_t soilSphere);
     double timeStep();
     void audit(const Vec3& force, const Vec3& torque, double dt, double soilStored, double forestTerm);
     // Throws InputError if a block sphere starts inside a standing stem.
@@ -54,7 +54,7 @@ private:
     const ContactLaw& law_;
     std::vector<Vec3> worldCentres_;
     std::vector<std::uint32_t> candidates_;
-    std::vector<SoilTouch> touches_;
+    ContactSet<SoilTouch> touches_;
     double anticipatedStiffness_ = 0;
     DissipationLedger ledger_;
     EnergyBudget budget_;

@@ -72,6 +72,7 @@ public:
     const_iterator begin() const { return touches_.begin(); }
     const_iterator end() const { return touches_.end(); }
     std::size_t size() const { return touches_.size(); }
+    bool empty() const { return touches_.empty(); }
 
 private:
     std::vector<Touch> touches_;

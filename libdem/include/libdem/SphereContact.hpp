@@ -1,0 +1,16 @@
+#pragma once
+// The narrow phase every contact shares: two spheres. A block's ball, a soil sphere, a stem node, or
+// a stem connection's cross-section at the point of its axis closest to the other body (Fig. 2:
+// cylinders touch like the spheres inscribed at their closest points).
+#include "libdem/ContactLaw.hpp"
+
+namespace sylva::dem {
+
+// Spheres A (centre ca, radius ra) and B: fills g's overlap (ra + rb - |ca - cb|; <= 0 when apart,
+// for callers that look ahead), and, when they touch, the normal from B to A, the point in the
+// middle of the overlap and both radii. Returns whether they touch (coinciding centres have no
+// normal: not a contact). The relative velocity, spin and moving mass are the caller's: they depend
+// on what carries each sphere.
+bool touchSpheres(const Vec3& ca, double ra, const Vec3& cb, double rb, ContactGeometry& g);
+
+}  // namespace sylva::dem

@@ -49,7 +49,6 @@ double nodeInverseMass(const Stem& s, std::size_t i, const Vec3& point, const Ve
     return inv;
 }
 
-
 }  // namespace
 
 ForestMotion::ForestMotion(const Scene& scene)

@@ -11,6 +11,17 @@ namespace sylva::dem {
 // middle of the overlap and both radii. Returns whether they touch (coinciding centres have no
 // normal: not a contact). The relative velocity, spin and moving mass are the caller's: they depend
 // on what carries each sphere.
-bool touchSpheres(const Vec3& ca, double ra, const Vec3& cb, double rb, ContactGeometry& g);
+// Inline: it runs for every block sphere against every connection within reach, every step.
+inline bool touchSpheres(const Vec3& ca, double ra, const Vec3& cb, double rb, ContactGeometry& g) {
+    const Vec3 d = ca - cb;
+    const double dist = d.norm();
+    g.overlap = ra + rb - dist;
+    if (g.overlap <= 0 || dist == 0) return false;
+    g.normal = d / dist;
+    g.point = cb + g.normal * (rb - 0.5 * g.overlap);
+    g.radiusA = ra;
+    g.radiusB = rb;
+    return true;
+}
 
 }  // namespace sylva::dem

@@ -10,12 +10,6 @@ namespace {
 constexpr double kSmallHalfSine = 0.05;  // sin(angle / 2): next term x^10 / 11 < 1e-14
 constexpr double kSmallAngle = 0.1;      // rad: next terms ~ a^8 / 4e6 < 3e-15
 
-Eigen::Matrix3d skew(const Vec3& v) {
-    Eigen::Matrix3d m;
-    m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-    return m;
-}
-
 }  // namespace
 
 Vec3 rotationVector(Quat q) {
@@ -42,9 +36,8 @@ Quat fromRotationVector(const Vec3& theta) {
     return Quat(Eigen::AngleAxisd(angle, theta / angle));
 }
 
-Eigen::Matrix3d inverseLeftJacobian(const Vec3& theta) {
+RotationJacobian inverseLeftJacobian(const Vec3& theta) {
     const double a2 = theta.squaredNorm();
-    const Eigen::Matrix3d k = skew(theta);
     double c;
     if (a2 < kSmallAngle * kSmallAngle) {
         c = 1.0 / 12 + a2 * (1.0 / 720 + a2 * (1.0 / 30240 + a2 / 1209600));
@@ -52,12 +45,11 @@ Eigen::Matrix3d inverseLeftJacobian(const Vec3& theta) {
         const double a = std::sqrt(a2);
         c = 1 / a2 - (1 + std::cos(a)) / (2 * a * std::sin(a));
     }
-    return Eigen::Matrix3d::Identity() - 0.5 * k + c * k * k;
+    return {theta, 0.5, c};
 }
 
-Eigen::Matrix3d rightJacobian(const Vec3& theta) {
+RotationJacobian rightJacobian(const Vec3& theta) {
     const double a2 = theta.squaredNorm();
-    const Eigen::Matrix3d k = skew(theta);
     double b, c;
     if (a2 < kSmallAngle * kSmallAngle) {
         b = 0.5 - a2 * (1.0 / 24 - a2 * (1.0 / 720 - a2 / 40320));
@@ -67,7 +59,7 @@ Eigen::Matrix3d rightJacobian(const Vec3& theta) {
         b = (1 - std::cos(a)) / a2;
         c = (a - std::sin(a)) / (a2 * a);
     }
-    return Eigen::Matrix3d::Identity() - b * k + c * k * k;
+    return {theta, b, c};
 }
 
 }  // namespace sylva::dem

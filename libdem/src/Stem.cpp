@@ -135,8 +135,8 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         // frame and the frame halfway between them, which is the connection's frame.
         const Vec3 theta = rotationVector(orientation[a].conjugate() * orientation[b]);
         const Quat frame = orientation[a] * fromRotationVector(0.5 * theta);
-        const Vec3 chord = position[b] - position[a];
-        const Vec3 stretch = frame.conjugate() * chord - Vec3(0, 0, length_ + k.weightCompression);  // shear x, y; axial z
+        const Vec3 chord = frame.conjugate() * (position[b] - position[a]);  // in the connection frame
+        const Vec3 stretch = chord - Vec3(0, 0, length_ + k.weightCompression);  // shear x, y; axial z
 
         const HingeWork w = theta.norm() > kFoldedConnection ? k.bending.snap()
                                                              : k.bending.deform(theta.head<2>(), stretch.head<2>());
@@ -152,7 +152,7 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
 
         // theta moves at inverseLeftJacobian(theta) R_a^T (omega_b - omega_a); the moment M conjugate to
         // theta acts on a as R_a J^-T M and on b as the opposite, so its power is exactly -M . dtheta/dt.
-        const Eigen::Matrix3d toTheta = inverseLeftJacobian(theta);
+        const RotationJacobian toTheta = inverseLeftJacobian(theta);
         const Eigen::Matrix3d ra = orientation[a].toRotationMatrix();
         const Vec3 rate = toTheta * (ra.transpose() * (angularVelocity[b] - angularVelocity[a]));
         const BendingDamping::Step damped = k.damping.advance(rate.head<2>(), decay);
@@ -161,19 +161,23 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         const Vec2& damping = damped.moment;
 
         const Vec2& mb = k.bending.moment();
-        const Vec3 moment = ra * (toTheta.transpose() * Vec3(mb.x() + damping.x(), mb.y() + damping.y(), k.twist * theta.z()));
+        const Vec3 moment(mb.x() + damping.x(), mb.y() + damping.y(), k.twist * theta.z());
         // The axial and shear springs pull the nodes apart along the chord (f on a, -f on b) and,
         // through their frame halfway between a and b, turn it: chord x f in all, shared by the nodes as
-        // the frame follows them (exactly half each for small theta).
+        // the frame follows them (exactly half each for small theta). Node b's share is
+        // (1/2) R_a J^-T J_r(theta / 2)^T R_frame^T (chord x f), and R_frame^T (chord x f) is the cross
+        // product of the two in the connection frame; b's share and the moment act through the same
+        // R_a J^-T, so they are summed before it.
         const Vec2 shear = k.bending.shearForce();
-        const Vec3 f = frame * Vec3(shear.x(), shear.y(), k.axial * stretch.z());
-        const Eigen::Matrix3d frameFromB = 0.5 * frame.toRotationMatrix() * rightJacobian(0.5 * theta) * toTheta * ra.transpose();
-        const Vec3 turn = chord.cross(f);
-        const Vec3 onB = frameFromB.transpose() * turn;
+        const Vec3 springs(shear.x(), shear.y(), k.axial * stretch.z());
+        const Vec3 turn = chord.cross(springs);
+        const Vec3 couple =
+            ra * toTheta.transposeTimes(moment - 0.5 * rightJacobian(0.5 * theta).transposeTimes(turn));
+        const Vec3 f = frame * springs;
         force[a] += f;
         force[b] -= f;
-        torque[a] += turn - onB + moment;
-        torque[b] += onB - moment;
+        torque[a] += frame * turn + couple;
+        torque[b] -= couple;
     }
     if (support_ == StemFoot::RootSpring) {
         Vec3 theta = rotationVector(footRest_.conjugate() * orientation[0]);
@@ -183,7 +187,7 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         if (angle > 0 && (theta - rootAngle_).norm() > kPi) theta -= 2 * kPi / angle * theta;
         ledger.rootPlasticity += root_.rotate(theta - rootAngle_);  // Eqs. 9-10
         rootAngle_ = theta;
-        torque[0] -= footRest_ * (inverseLeftJacobian(theta).transpose() * root_.moment());
+        torque[0] -= footRest_ * inverseLeftJacobian(theta).transposeTimes(root_.moment());
         stored += root_.storedEnergy();
     }
     elasticEnergy_ = stored;

@@ -16,6 +16,18 @@ long double invLeftCoefficient(long double a) { return 1 / (a * a) - (1 + std::c
 long double rightB(long double a) { return (1 - std::cos(a)) / (a * a); }
 long double rightC(long double a) { return (a - std::sin(a)) / (a * a * a); }
 
+// The matrix of a Jacobian, column by column, and of its transpose.
+Eigen::Matrix3d matrixOf(const RotationJacobian& j) {
+    Eigen::Matrix3d m;
+    for (int i = 0; i < 3; ++i) m.col(i) = j * Vec3::Unit(i);
+    return m;
+}
+Eigen::Matrix3d transposeOf(const RotationJacobian& j) {
+    Eigen::Matrix3d m;
+    for (int i = 0; i < 3; ++i) m.col(i) = j.transposeTimes(Vec3::Unit(i));
+    return m;
+}
+
 }  // namespace
 
 TEST(RotationVector, RoundTripAcrossTheSeriesSwitch) {
@@ -39,10 +51,13 @@ TEST(RotationVector, JacobiansMatchTheClosedFormsNearTheSwitch) {
         k << 0, -theta.z(), theta.y(), theta.z(), 0, -theta.x(), -theta.y(), theta.x(), 0;
         const Eigen::Matrix3d invLeft = Eigen::Matrix3d::Identity() - 0.5 * k + double(invLeftCoefficient(a)) * k * k;
         const Eigen::Matrix3d right = Eigen::Matrix3d::Identity() - double(rightB(a)) * k + double(rightC(a)) * k * k;
-        EXPECT_LT((inverseLeftJacobian(theta) - invLeft).norm(), 1e-14) << double(a);
-        EXPECT_LT((rightJacobian(theta) - right).norm(), 1e-14) << double(a);
+        EXPECT_LT((matrixOf(inverseLeftJacobian(theta)) - invLeft).norm(), 1e-14) << double(a);
+        EXPECT_LT((matrixOf(rightJacobian(theta)) - right).norm(), 1e-14) << double(a);
+        EXPECT_LT((transposeOf(inverseLeftJacobian(theta)) - invLeft.transpose()).norm(), 1e-14) << double(a);
+        EXPECT_LT((transposeOf(rightJacobian(theta)) - right.transpose()).norm(), 1e-14) << double(a);
     }
     // J_r(theta) = J_l(-theta): inverseLeftJacobian(-theta) undoes rightJacobian(theta).
     const Vec3 theta = 0.05 * axis;
-    EXPECT_LT((inverseLeftJacobian(-theta) * rightJacobian(theta) - Eigen::Matrix3d::Identity()).norm(), 1e-14);
+    EXPECT_LT((matrixOf(inverseLeftJacobian(-theta)) * matrixOf(rightJacobian(theta)) - Eigen::Matrix3d::Identity()).norm(),
+              1e-14);
 }

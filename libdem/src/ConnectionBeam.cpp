@@ -37,7 +37,6 @@ ConnectionBeam::ConnectionBeam(const BendingParams& p, double diameterA, double 
     for (const Rule& r : kRules)
         if (r.count == sections) rule_ = &r;
     if (!rule_) throw std::invalid_argument("ConnectionBeam: " + std::to_string(sections) + " sections (1, 3 or 5)");
-    const int dim = reading_ == BendingReading::Isotropic ? 2 : 1;
     for (int i = 0; i < rule_->count; ++i) {
         const double d = diameterA + (diameterB - diameterA) * 0.5 * (rule_->xi[i] + 1);
         const HingeCoefficients& k = sectionK_[i] = bendingCoefficients(p, d, length);
@@ -45,9 +44,9 @@ ConnectionBeam::ConnectionBeam(const BendingParams& p, double diameterA, double 
         hardening_[i] = k.plastic > 0 ? k.plastic * k.unloading / (k.unloading - k.plastic) : 0;
         elasticCompliance_[i] = 1 / k.elastic;
         unloadingCompliance_[i] = 1 / k.unloading;
-        for (Channel& ch : channels_) ch.section[i] = Section{Moment::Zero(dim), k.yieldMoment};
+        for (Channel& ch : channels_) ch.section[i] = Section{Moment::Zero(), k.yieldMoment};
     }
-    for (Channel& ch : channels_) ch.mean = ch.change = Moment::Zero(dim);
+    for (Channel& ch : channels_) ch.mean = ch.change = Moment::Zero();
 }
 
 // The connection's deformations are the sections' ones summed with their weights, plus the shear
@@ -204,8 +203,8 @@ HingeWork ConnectionBeam::deform(const Vec2& theta, const Vec2& stretch) {
     const int channels = reading_ == BendingReading::Isotropic ? 1 : 2;
     for (int c = 0; c < channels; ++c) {
         Channel& ch = channels_[c];
-        Moment th = channels == 1 ? Moment(theta) : Moment::Constant(1, theta[c]);
-        Moment ep = channels == 1 ? Moment(eps) : Moment::Constant(1, eps[c]);
+        const Moment th = channels == 1 ? theta : Moment(theta[c], 0);
+        const Moment ep = channels == 1 ? eps : Moment(eps[c], 0);
         const HingeWork w = deformChannel(ch, th, ep);
         total.dissipated += w.dissipated;
         total.created += w.created;

@@ -51,7 +51,9 @@ public:
     struct Rule;  // where the sections sit and what they weigh (ConnectionBeam.cpp)
 
 private:
-    using Moment = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 2, 1>;
+    // Two components for the moment vector; a per-axis channel uses the first and keeps the second
+    // at zero, where every norm and product gives the one-component result exactly.
+    using Moment = Vec2;
     struct Section {
         Moment plastic;      // plastic rotation per unit weight, rad: l times the plastic curvature
         double yieldMoment;  // radius of the elastic domain: M_Elast, then the largest moment reached

@@ -45,6 +45,14 @@ SlopeProfile::SlopeProfile(std::vector<double> x, std::vector<double> z) : x_(st
     s_.resize(x_.size());
     s_[0] = 0.0;
     for (std::size_t i = 1; i < x_.size(); ++i) s_[i] = s_[i - 1] + std::hypot(x_[i] - x_[i - 1], z_[i] - z_[i - 1]);
+    const std::size_t segments = x_.size() - 1;
+    binsPerMetre_ = 2.0 * static_cast<double>(segments) / (x_.back() - x_.front());
+    bin_.resize(2 * segments + 2);
+    for (std::size_t b = 0; b < bin_.size(); ++b) {
+        const double start = x_.front() + static_cast<double>(b) / binsPerMetre_;
+        const auto past = static_cast<std::size_t>(std::upper_bound(x_.begin(), x_.end(), start) - x_.begin());
+        bin_[b] = past >= 2 ? past - 2 : 0;
+    }
 }
 
 SlopeProfile SlopeProfile::readCsv(const std::string& path) {
@@ -67,9 +75,17 @@ SlopeProfile SlopeProfile::readCsv(const std::string& path) {
 }
 
 std::size_t SlopeProfile::segmentAt(double x) const {
-    const auto it = std::upper_bound(x_.begin(), x_.end(), x);
-    const std::size_t i = it == x_.begin() ? 0 : static_cast<std::size_t>(it - x_.begin()) - 1;
-    return std::min(i, x_.size() - 2);
+    // The first vertex past x lies in (lo, hi]; outside the bins (or for NaN) anywhere after the first.
+    std::size_t lo = 0, hi = x_.size() - 1;
+    const double u = (x - x_.front()) * binsPerMetre_;
+    if (u >= 0 && u < static_cast<double>(bin_.size() - 1)) {
+        const auto b = static_cast<std::size_t>(u);
+        lo = bin_[b];
+        hi = std::min(bin_[b + 1] + 3, hi);
+    }
+    const auto past = std::upper_bound(x_.begin() + static_cast<std::ptrdiff_t>(lo) + 1,
+                                       x_.begin() + static_cast<std::ptrdiff_t>(hi) + 1, x);
+    return std::min(static_cast<std::size_t>(past - x_.begin()) - 1, x_.size() - 2);
 }
 
 double SlopeProfile::height(double x) const {

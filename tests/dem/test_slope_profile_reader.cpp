@@ -2,6 +2,7 @@
 // and the stand-in slope files of data/slopes/ against what the issue asks of them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -112,6 +113,23 @@ TEST(SlopeProfile, SlopeIsPositiveDownhillAndAVertexBelongsToTheSegmentAfterIt) 
     EXPECT_NEAR(p.slopeDeg(3.0), 0.0, 1e-12);
     EXPECT_NEAR(p.slopeDeg(7.0), -std::atan2(3.0, 4.0) * deg, 1e-12);
     EXPECT_NEAR(p.slopeDeg(-50.0), std::atan2(4.0, 3.0) * deg, 1e-12);
+}
+
+// segmentAt looks in equal bins along x: it must name the segment a search of every vertex names,
+// on vertices, next to them, outside the profile, and where vertices crowd into one bin.
+TEST(SlopeProfile, BinnedLookupFindsTheSegmentAFullSearchFinds) {
+    std::vector<double> x{-3.0, 0.0, 1e-9, 2e-9, 0.5, 0.5000001, 7.0, 7.25, 100.0, 100.0 + 1e-7, 1000.0};
+    const SlopeProfile p(x, std::vector<double>(x.size(), 0.0));
+    const auto search = [&](double q) {
+        const auto past = std::upper_bound(x.begin(), x.end(), q);
+        const std::size_t i = past == x.begin() ? 0 : static_cast<std::size_t>(past - x.begin()) - 1;
+        return std::min(i, x.size() - 2);
+    };
+    std::vector<double> queries{-1e9, 2e9, std::nan("")};
+    for (const double v : x)
+        for (const double q : {v, std::nextafter(v, -1e300), std::nextafter(v, 1e300), v - 1e-6, v + 1e-6}) queries.push_back(q);
+    for (int i = 0; i <= 20000; ++i) queries.push_back(-10.0 + 1020.0 * i / 20000);
+    for (const double q : queries) EXPECT_EQ(p.segmentAt(q), search(q)) << q;
 }
 
 TEST(SlopeProfile, AbscissaIsTheArcLength) {

@@ -28,6 +28,10 @@ public:
 
 private:
     std::vector<double> x_, z_, s_;  // s_: abscissa of each vertex
+    // Every awake stem node asks for the ground under it at every step: equal bins along x, two per
+    // segment, each naming a vertex range that holds the answer, so a query searches a few vertices.
+    double binsPerMetre_ = 0;
+    std::vector<std::size_t> bin_;  // a vertex at or before the bin's start, one segment early against round-off
 };
 
 }  // namespace sylva::dem

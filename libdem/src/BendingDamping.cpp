@@ -22,7 +22,10 @@ double BendingDamping::relaxationTime(int branch) { return kRelaxationTimes[bran
 BendingDamping::Decay BendingDamping::decayOver(double dt) {
     Decay d;
     d.dt = dt;
-    for (int b = 0; b < kBranches; ++b) d.factor[b] = std::exp(-dt / kRelaxationTimes[b]);
+    for (int b = 0; b < kBranches; ++b) {
+        d.factor[b] = std::exp(-dt / kRelaxationTimes[b]);
+        d.lag[b] = kRelaxationTimes[b] * (1 - d.factor[b]);
+    }
     return d;
 }
 
@@ -52,31 +55,26 @@ BendingDamping::Step BendingDamping::advance(const Vec2& rate, const Decay& d) {
     // work r . int m dt goes into its spring or is dissipated. The nodes feel the branches' moment at
     // the step's end, where they are: the step's mean would lag half a step behind their rotation,
     // and a spring that lags pumps energy in.
-    double work = 0, storedChange = 0;
+    const Vec2 steady = branchStiffness_ * rate;
+    Vec2 integral = Vec2::Zero();
+    double squares = 0;
     for (int b = 0; b < kBranches; ++b) {
-        const double tau = kRelaxationTimes[b];
-        const double decay = d.factor[b];
-        const Vec2 settled = branchStiffness_ * tau * rate;  // m for a steady rate
-        const Vec2 before = branch_[b];
-        const Vec2 integral = settled * dt + (before - settled) * (tau * (1 - decay));
-        branch_[b] = settled + (before - settled) * decay;
+        const Vec2 settled = kRelaxationTimes[b] * steady;  // m for a steady rate
+        const Vec2 offset = branch_[b] - settled;
+        integral += settled * dt + offset * d.lag[b];
+        branch_[b] = settled + offset * d.factor[b];
         s.moment += branch_[b];
-        work += rate.dot(integral);
-        storedChange += (branch_[b].squaredNorm() - before.squaredNorm()) / (2 * branchStiffness_);
+        squares += branch_[b].squaredNorm();
     }
-    s.dissipated = work - storedChange;
+    const double stored = squares / (2 * branchStiffness_);
+    s.dissipated = rate.dot(integral) - (stored - stored_);
+    stored_ = stored;
     return s;
 }
 
-double BendingDamping::storedEnergy() const {
-    if (branchStiffness_ <= 0) return 0;
-    double e = 0;
-    for (const Vec2& m : branch_) e += m.squaredNorm();
-    return e / (2 * branchStiffness_);
-}
-
 double BendingDamping::release() {
-    const double e = storedEnergy();
+    const double e = stored_;
+    stored_ = 0;
     for (auto& m : branch_) m.setZero();
     viscosity_ = 0;
     branchStiffness_ = 0;

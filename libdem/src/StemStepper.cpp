@@ -74,12 +74,11 @@ StemEnergy StemStepper::step(Stem& stem, double dt, const StemLoads& loads) {
             ledger.relaxation += rate * inertia[i] * before.dot(turn);
             stem.orientation[i] = (fromRotationVector(turn) * stem.orientation[i]).normalized();
         }
-    }
-    e.netLoss = netLoss(before, ledger);
-    for (std::size_t i = 0; i < n; ++i)
         if (!stem.position[i].allFinite() || !stem.velocity[i].allFinite() || !stem.angularVelocity[i].allFinite())
             throw SimulationError("stem node " + std::to_string(i) + " became NaN (time step " + std::to_string(dt) +
                                   " s; stable limit " + std::to_string(stem.stableTimeStep()) + " s)");
+    }
+    e.netLoss = netLoss(before, ledger);
     return e;
 }
 

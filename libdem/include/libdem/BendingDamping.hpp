@@ -39,13 +39,14 @@ public:
     struct Decay {
         double dt = 0;
         std::array<double, kBranches> factor{};  // exp(-dt / tau_b)
+        std::array<double, kBranches> lag{};     // tau_b (1 - exp(-dt / tau_b)): the step's integral of the decay
     };
     static Decay decayOver(double dt);
     // Over a step at the relative rotation rate `rate` (x, y of the connection frame, rad/s).
     Step advance(const Vec2& rate, const Decay& decay);
     Step advance(const Vec2& rate, double dt) { return advance(rate, decayOver(dt)); }
     // Energy held by the Maxwell branches' springs, J (zero for the viscous law).
-    double storedEnergy() const;
+    double storedEnergy() const { return stored_; }
     // The connection broke: the branches let go; returns what they held, J.
     double release();
 
@@ -59,6 +60,7 @@ private:
     double viscosity_ = 0;        // tau K_Elast (Eqs. 7-8)
     double branchStiffness_ = 0;  // g K_Elast
     std::array<Vec2, kBranches> branch_{};
+    double stored_ = 0;  // sum of |m_b|^2 / (2 g K_Elast), kept as the branches advance
 };
 
 }  // namespace sylva::dem

@@ -263,9 +263,11 @@ void ForestMotion::listStemPairs() {
 bool ForestMotion::stemPairsStale() const {
     if (stemPairsStale_) return true;
     const double limit2 = 0.25 * kStemPairSkin * kStemPairSkin;
-    for (const AwakeStem& a : awake_)
+    for (const AwakeStem& a : awake_) {
+        if (!a.moving) continue;  // never stepped: its nodes are where they were listed
         for (std::size_t i = 0; i < a.stem.nodeCount(); ++i)
             if ((a.stem.position[i] - a.listedAt[i]).squaredNorm() > limit2) return true;
+    }
     return false;
 }
 
@@ -309,7 +311,9 @@ void ForestMotion::detectStemStem() {
 void ForestMotion::detectStemSoil() {
     soilTouches_.beginDetection();
     const double rs = soil_.radius();
-    for (const auto& a : awake_) {
+    for (auto& a : awake_) {
+        if (a.soilChecked && !a.moving) continue;
+        a.soilChecked = true;
         const Stem& s = a.stem;
         for (std::uint32_t k = 1; k < s.nodeCount(); ++k) {
             const Vec3& p = s.position[k];
@@ -433,8 +437,11 @@ void ForestMotion::integrate(double dt) {
     double stems = 0;
     for (auto& a : awake_) {
         if (!a.moving) {
-            const StemEnergy e = stepper_.energyAtRest(a.stem);
-            stems += e.total() + e.netLoss + a.stem.ledger.externalWork;  // as below, loads' work excluded
+            if (!a.standingBudget) {
+                const StemEnergy e = stepper_.energyAtRest(a.stem);
+                a.standingBudget = e.total() + e.netLoss + a.stem.ledger.externalWork;  // as below, loads' work excluded
+            }
+            stems += *a.standingBudget;
             continue;
         }
         const double externalBefore = a.stem.ledger.externalWork;

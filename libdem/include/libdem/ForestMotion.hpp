@@ -7,6 +7,7 @@
 // it may sleep is StemActivity's; what waking and sleeping do to the run's energy and contacts is here.
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -61,6 +62,11 @@ private:
                                   // and does not limit the time step
         mutable std::vector<double> contactOmega2;  // per node, from the contacts' springs (stableStep)
         std::vector<Vec3> listedAt;  // node positions when stemPairs_ was made
+        // Checked against the soil since woken. A stem touching the soil moves, and one that does not
+        // move keeps its nodes where they were checked: it needs no new check.
+        bool soilChecked = false;
+        // Its energy and its ledger's balance while it stands still: the same at every step until it moves.
+        std::optional<double> standingBudget;
     };
     // Connections of two awake stems (indices into awake_) close enough to be checked each step.
     struct ConnectionPair {

@@ -1,7 +1,8 @@
 // Speed of forested runs (issue 4's target: 100 runs through a 500 m x 200 m forest at ~2 000
 // stems/ha in under 2 minutes on 2 cores, under 1 GB). Generates the MO1 aggregated forest of the
 // outside check (extent 130,0,630,200, seed 3), then runs the same campaign with and without it on
-// the paper's scene: the ratio of the two is what the forest costs.
+// the paper's scene: the ratio of the two is what the forest costs, and where the forested steps'
+// time goes, phase by phase.
 //   bench_forest [runs] [threads] [seed]
 #include <sys/resource.h>
 
@@ -24,6 +25,7 @@ struct Timing {
     double wall = 0;
     std::vector<double> cpu, runout;
     long impacts = 0;
+    dem::PhaseTimes phases;
 };
 
 Timing timeCampaign(const dem::Scene& scene, int runs, int threads, unsigned long seed) {
@@ -39,6 +41,7 @@ Timing timeCampaign(const dem::Scene& scene, int runs, int threads, unsigned lon
         t.cpu.push_back(r.cpuSeconds);
         t.runout.push_back(r.runoutAlongSlope);
         t.impacts += static_cast<long>(r.impacts.size());
+        t.phases += r.phases;
     }
     return t;
 }
@@ -74,6 +77,10 @@ int main(int argc, char** argv) {
                     dem::quantile(t.cpu, 0.9), dem::quantile(t.runout, 0.5), t.impacts);
     std::printf("forest / no forest: wall x%.0f; PF50 on these runs %.3f\n", with.wall / without.wall,
                 1 - dem::quantile(with.runout, 0.5) / dem::quantile(without.runout, 0.5));
+    std::printf("where a forested step's time goes (share of the steps' time, %.1f s in all):\n", with.phases.total());
+    for (std::size_t p = 0; p < dem::kStepPhases; ++p)
+        std::printf("  %-20s %5.1f %%\n", dem::name(static_cast<dem::StepPhase>(p)),
+                    100 * with.phases.seconds[p] / with.phases.total());
     std::printf("peak resident memory: %.0f MB\n", ru.ru_maxrss / 1024.0);
     return 0;
 }

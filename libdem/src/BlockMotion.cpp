@@ -82,15 +82,15 @@ BlockMotion::BlockMotion(const Scene& scene, const Release& start)
 }
 
 double BlockMotion::step() {
-    // detect contacts
+    PhaseClock clock(phases_);
     updateCentres();
     detectContacts();
+    clock.lap(StepPhase::BlockSoil);
     // how far a block sphere can travel over the next two steps
     const double reach = 2 * (block_.velocity.norm() + block_.angularVelocity().norm() * block_.boundingRadius()) * lastDt_;
-    forest_.detect(block_, worldCentres_, reach, t_);
-    // time step
+    forest_.detect(block_, worldCentres_, reach, t_, clock);
     const double dt = timeStep();
-    // forces
+    clock.lap(StepPhase::StableStep);
     Vec3 force(0, 0, -block_.mass() * cfg_.gravity), torque(0, 0, 0);
     double stored = 0;
     for (auto& c : touches_) {
@@ -100,14 +100,18 @@ double BlockMotion::step() {
         stored += law_.storedEnergy(c.geometry, c.history);
     }
     forest_.forces(block_, dt, force, torque);
-    // integrate (the stems report their energy at the step's start), audit, and let stems the
-    // block has left fall asleep
+    clock.lap(StepPhase::ContactForces);
+    // The stems report their energy at the step's start, which the audit closes with the block's.
     forest_.integrate(dt);
+    clock.lap(StepPhase::Stems);
     audit(force, torque, dt, stored, forest_.budgetTerm());
+    clock.lap(StepPhase::Audit);
     block_.advance(dt, force, torque);
     t_ += dt;
     ++steps_;
     lastDt_ = dt;
+    clock.lap(StepPhase::Block);
+    // Stems the block has left, and that have stopped, fall asleep.
     forest_.sleep(block_, t_);
     if (!block_.position.allFinite() || !block_.velocity.allFinite() || !block_.angularMomentum.allFinite())
         throw SimulationError("the block's state became NaN at t = " + std::to_string(t_) + " s (time step " +
@@ -116,6 +120,7 @@ double BlockMotion::step() {
                                   2 * (soil_.radius() + block_.boundingRadius()))
         throw SimulationError("the block fell through the soil at " + where(block_.position) + ", t = " +
                               std::to_string(t_) + " s: contacts too soft or time step too large");
+    clock.lap(StepPhase::Sleep);
     return dt;
 }
 

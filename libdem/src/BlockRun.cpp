@@ -151,6 +151,7 @@ RunResult simulateBlock(const Scene& scene, int run, std::uint64_t seed, const R
     r.cpuSeconds = threadCpuSeconds() - cpu0;
     if (options.recordTrajectory) r.trajectory.push_back(sample(block, motion.time()));
     r.steps = motion.steps();
+    r.phases = motion.phases();
     r.duration = motion.time();
     r.meanDt = r.duration / std::max(1L, r.steps);
     r.stop = block.position;

@@ -39,6 +39,7 @@ CampaignSummary summarise(const std::vector<RunResult>& runs) {
         vmax.push_back(r.maxSpeed);
         bounce.push_back(r.maxBounce);
         cpu.push_back(r.cpuSeconds);
+        s.phases += r.phases;
         low += r.maxBounce <= 1.0;
         s.worstEnergyImbalance = std::max(s.worstEnergyImbalance, r.energy.imbalance);
         s.energyFlaggedRuns += r.energy.flagged;
@@ -158,6 +159,10 @@ void writeSummaryJson(const std::string& path, const CampaignSummary& s, double 
     j.field("cpu_per_run50_s", s.cpu50).field("worst_energy_imbalance", s.worstEnergyImbalance);
     j.field("energy_flagged_runs", s.energyFlaggedRuns);
     j.field("failed_runs", s.failedRuns);
+    // Where the steps' time went, summed over the runs (bench/bench_forest prints the shares).
+    j.key("time_by_phase_s").beginObject();
+    for (std::size_t p = 0; p < kStepPhases; ++p) j.field(name(static_cast<StepPhase>(p)), s.phases.seconds[p]);
+    j.endObject();
     j.key("stop_reasons").beginObject();
     for (const auto& [k, v] : s.stopReasons) j.field(k, v);
     j.endObject();

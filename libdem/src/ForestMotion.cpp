@@ -82,11 +82,12 @@ void ForestMotion::wake(std::uint32_t tree, double t) {
     const double step = stem.stableTimeStep();
     const bool broken = falling(stem);
     // The all-awake reference steps every stem, standing or not.
-    awake_.push_back(AwakeStem{tree, std::move(stem), {}, step, t, broken, cfg_.activity.allAwake, {}, {}});
+    awake_.push_back(AwakeStem{tree, std::move(stem), {}, step, t, broken, cfg_.activity.allAwake, {}, {}, false, std::nullopt});
     stemPairsStale_ = true;
 }
 
-void ForestMotion::detect(const RigidBody& block, const std::vector<Vec3>& centres, double reachAhead, double t) {
+void ForestMotion::detect(const RigidBody& block, const std::vector<Vec3>& centres, double reachAhead, double t,
+                          PhaseClock& clock) {
     if (empty()) return;
     now_ = t;
     if (cfg_.activity.allAwake) {
@@ -102,6 +103,7 @@ void ForestMotion::detect(const RigidBody& block, const std::vector<Vec3>& centr
             if (StemActivity::blockReaches(block, reach, trees_.tree(i)) && !awake(i)) wake(i, t);
     }
     wakeNeighbours();
+    clock.lap(StepPhase::Wake);
     detectBlockStem(block, centres, reachAhead);
     impacts_.beginStep();
     for (const auto& touch : blockTouches_)
@@ -111,9 +113,12 @@ void ForestMotion::detect(const RigidBody& block, const std::vector<Vec3>& centr
             impacts_.touch(block, touch.tree, trees_.tree(touch.tree), touch.piece, touch.geometry.point, t, a->stem);
         }
     impacts_.endStep(block, [this](std::uint32_t tree) -> const Stem& { return awake(tree)->stem; });
+    clock.lap(StepPhase::BlockStem);
     detectStemStem();
+    clock.lap(StepPhase::StemStem);
     detectStemSoil();
     setMovingWhereTouched();
+    clock.lap(StepPhase::StemSoil);
 }
 
 void ForestMotion::setMovingWhereTouched() {

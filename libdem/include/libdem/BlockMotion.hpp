@@ -1,12 +1,14 @@
 #pragma once
 // The block's motion on the soil and through the forest, one explicit step at a time:
-// detect contacts -> choose the stable time step -> contact forces -> integrate -> audit energy.
+// detect contacts -> choose the stable time step -> contact forces -> integrate -> audit energy
+// -> sleep; each phase timed (StepPhases).
 #include <cstdint>
 #include <vector>
 
 #include "libdem/BlockRun.hpp"
 #include "libdem/ContactSet.hpp"
 #include "libdem/ForestMotion.hpp"
+#include "libdem/StepPhases.hpp"
 
 namespace sylva::dem {
 
@@ -21,6 +23,7 @@ public:
 
     double time() const { return t_; }
     long steps() const { return steps_; }
+    const PhaseTimes& phases() const { return phases_; }  // over the steps so far
     RigidBody& block() { return block_; }  // e.g. to give the block an initial velocity
     const RigidBody& block() const { return block_; }
     bool touching() const { return !touches_.empty(); }
@@ -63,6 +66,7 @@ private:
     double lastDt_ = 0;
     double t_ = 0;
     long steps_ = 0;
+    PhaseTimes phases_;
 };
 
 }  // namespace sylva::dem

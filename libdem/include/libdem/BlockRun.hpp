@@ -8,6 +8,7 @@
 #include "libdem/ForestLedger.hpp"
 #include "libdem/Scene.hpp"
 #include "libdem/StemLedger.hpp"
+#include "libdem/StepPhases.hpp"
 
 namespace sylva::dem {
 
@@ -58,6 +59,7 @@ struct RunResult {
     double duration = 0, cpuSeconds = 0;
     long steps = 0;
     double meanDt = 0;
+    PhaseTimes phases;  // where its steps' time went
     EnergyBudget energy;
     std::vector<TreeImpact> impacts;
     ForestLedger forestEnergy;

@@ -19,6 +19,7 @@ struct CampaignSummary {
     double meanSpeed50 = 0, maxSpeed50 = 0;  // medians over runs, m/s
     double maxBounce50 = 0, shareBounceBelow1m = 0;
     double cpu50 = 0;
+    PhaseTimes phases;  // summed over the runs
     double worstEnergyImbalance = 0;
     int energyFlaggedRuns = 0;  // runs whose budget did not close to integration.energy_warning
     int failedRuns = 0;         // stopped on a SimulationError: counted here, left out of every statistic above

@@ -18,6 +18,7 @@
 #include "libdem/StableStep.hpp"
 #include "libdem/StemActivity.hpp"
 #include "libdem/StemStepper.hpp"
+#include "libdem/StepPhases.hpp"
 
 namespace sylva::dem {
 
@@ -31,7 +32,8 @@ public:
 
     // Wakes the stems the block is about to reach, then finds the block/stem, stem/stem and
     // stem/soil contacts (histories carried, also when a contact slides along a stem).
-    void detect(const RigidBody& block, const std::vector<Vec3>& blockCentres, double reachAhead, double t);
+    void detect(const RigidBody& block, const std::vector<Vec3>& blockCentres, double reachAhead, double t,
+                PhaseClock& clock);
     // The largest stable step of the awake stems and their contacts (infinity if none); the block's
     // side of the block/stem springs is added to `blockStep`.
     double stableStep(const RigidBody& block, StableStep& blockStep) const;

@@ -1,0 +1,33 @@
+#include "libdem/StepPhases.hpp"
+
+namespace sylva::dem {
+
+const char* name(StepPhase phase) {
+    switch (phase) {
+        case StepPhase::BlockSoil: return "block_soil_contacts";
+        case StepPhase::Wake: return "wake";
+        case StepPhase::BlockStem: return "block_stem_contacts";
+        case StepPhase::StemStem: return "stem_stem_contacts";
+        case StepPhase::StemSoil: return "stem_soil_contacts";
+        case StepPhase::StableStep: return "stable_step";
+        case StepPhase::ContactForces: return "contact_forces";
+        case StepPhase::Stems: return "stems";
+        case StepPhase::Audit: return "audit";
+        case StepPhase::Block: return "block";
+        case StepPhase::Sleep: return "sleep";
+    }
+    return "?";
+}
+
+double PhaseTimes::total() const {
+    double t = 0;
+    for (const double s : seconds) t += s;
+    return t;
+}
+
+PhaseTimes& PhaseTimes::operator+=(const PhaseTimes& other) {
+    for (std::size_t i = 0; i < kStepPhases; ++i) seconds[i] += other.seconds[i];
+    return *this;
+}
+
+}  // namespace sylva::dem

@@ -1,0 +1,39 @@
+// The step's phases are timed (StepPhases): every phase has its own name in summary.json, the
+// phases' times are a part of the run's time, and a run through a tree spends time stepping it.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <set>
+#include <string>
+
+#include "libdem/BlockRun.hpp"
+#include "libdem/StepPhases.hpp"
+
+using namespace sylva::dem;
+
+TEST(StepPhases, EveryPhaseHasItsOwnName) {
+    std::set<std::string> names;
+    for (std::size_t p = 0; p < kStepPhases; ++p) {
+        const std::string n = name(static_cast<StepPhase>(p));
+        EXPECT_NE(n, "?") << p;
+        EXPECT_EQ(n.find_first_not_of("abcdefghijklmnopqrstuvwxyz_"), std::string::npos) << n;
+        names.insert(n);
+    }
+    EXPECT_EQ(names.size(), kStepPhases);
+}
+
+// The phases are laps of one steady clock inside the step, so together they cannot exceed the run's
+// own time measured around it by the same clock; the block hits the tree, so the stems' phase and
+// the block/stem contacts took time.
+TEST(StepPhases, PhasesArePartOfTheRunAndTheTreeIsStepped) {
+    const Scene scene(loadScene(std::string(SYLVAROCK_DATA) + "/scenes/single-tree.ini", {"stop.max_time_s=3"}));
+    const auto t0 = std::chrono::steady_clock::now();
+    const RunResult r = simulateBlock(scene, 0, 1);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    ASSERT_FALSE(r.impacts.empty());
+    EXPECT_GT(r.phases.total(), 0.0);
+    EXPECT_LE(r.phases.total(), wall);
+    for (const double s : r.phases.seconds) EXPECT_GE(s, 0.0);
+    EXPECT_GT(r.phases[StepPhase::Stems], 0.0);
+    EXPECT_GT(r.phases[StepPhase::BlockStem], 0.0);
+}

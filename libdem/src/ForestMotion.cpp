@@ -258,7 +258,7 @@ void ForestMotion::listStemPairs() {
                     if ((0.5 * (a0 + a1) - 0.5 * (b0 + b1)).squaredNorm() > reach * reach) continue;
                     const auto [s, t] = closestBetweenSegments(a0, a1, b0, b1);
                     if ((a0 + s * (a1 - a0) - b0 - t * (b1 - b0)).squaredNorm() > near * near) continue;
-                    stemPairs_.push_back(ConnectionPair{ia, ib, ca, cb});
+                    stemPairs_.push_back(ConnectionPair{ia, ib, ca, cb, false});
                 }
             }
         }
@@ -279,10 +279,20 @@ bool ForestMotion::stemPairsStale() const {
 void ForestMotion::detectStemStem() {
     stemTouches_.beginDetection();
     if (stemPairsStale()) listStemPairs();
-    for (const ConnectionPair& pair : stemPairs_) {
+    for (ConnectionPair& pair : stemPairs_) {
         const AwakeStem& A = awake_[pair.a];
         const AwakeStem& B = awake_[pair.b];
         const std::size_t ca = pair.connectionA, cb = pair.connectionB;
+        const ContactKey key{A.tree, B.tree, static_cast<std::uint32_t>(ca), static_cast<std::uint32_t>(cb)};
+        if (!A.moving && !B.moving) {
+            // Two stems standing still (a stool's stems fused at their foot): the same contact as at the
+            // last check, or none.
+            if (pair.checkedStill) {
+                if (StemStemTouch* touch = stemTouches_.find(key)) touch->touching = true;
+                continue;
+            }
+            pair.checkedStill = true;
+        }
         if (A.stem.broken(ca) || B.stem.broken(cb)) continue;
         const Vec3 &a0 = A.stem.position[ca], &a1 = A.stem.position[ca + 1];
         const Vec3 &b0 = B.stem.position[cb], &b1 = B.stem.position[cb + 1];
@@ -293,7 +303,6 @@ void ForestMotion::detectStemStem() {
         const double overlap = found.overlap;
         // Stem/stem contacts are frictionless (Table 2: phi_t-t = 0), so they carry no history worth
         // moving along the stems: one contact per pair of connections.
-        const ContactKey key{A.tree, B.tree, static_cast<std::uint32_t>(ca), static_cast<std::uint32_t>(cb)};
         StemStemTouch* touch = stemTouches_.find(key);
         if (!touch) {
             const bool fused = fusedAtRest(trees_.tree(A.tree), ca, A.stem, trees_.tree(B.tree), cb, B.stem);

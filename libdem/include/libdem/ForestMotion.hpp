@@ -73,6 +73,8 @@ private:
     // Connections of two awake stems (indices into awake_) close enough to be checked each step.
     struct ConnectionPair {
         std::size_t a, b, connectionA, connectionB;
+        // Checked while neither stem moved: until one does, the check would find what it found then.
+        bool checkedStill = false;
     };
     // A block sphere against a stem, or against one piece of a broken stem (the deepest of its
     // connections this step).

@@ -1,0 +1,241 @@
+// The forest's narrow phase (ForestMotion, docs/model.md "The step"): the block's spheres against
+// the awake stems, the awake stems against each other (through a pair list kept with a skin) and
+// against the soil, each kind kept in its ContactSet. Waking, forces, stepping and sleeping are in
+// ForestMotion.cpp.
+#include "libdem/ForestMotion.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "libdem/SegmentGeometry.hpp"
+#include "libdem/SphereContact.hpp"
+
+namespace sylva::dem {
+
+namespace {
+
+// History of a contact first seen at this overlap. Stems are checked against each other only
+// while awake, so a stem can be woken into a neighbour that already bent into it; the part of the
+// overlap no step's motion could explain (kMaxOnsetOverlap) becomes an offset the spring starts from.
+constexpr double kMaxOnsetOverlap = 2e-3;  // m: 40 m/s x 5e-5 s, the most one stem step brings
+ContactHistory startedAt(double overlap) {
+    ContactHistory h;
+    h.overlapOffset = std::max(0.0, overlap - kMaxOnsetOverlap);
+    return h;
+}
+
+// Stems of one stool stand so close that their cones meet near the foot: the connections of two
+// stems that overlap in the stems' rest shape are one fused stump, not a contact.
+bool fusedAtRest(const PlacedTree& a, std::size_t ca, const Stem& sa, const PlacedTree& b, std::size_t cb, const Stem& sb) {
+    const double la = sa.connectionLength(), lb = sb.connectionLength();
+    const double za0 = a.foot.z() + ca * la, za1 = za0 + la, zb0 = b.foot.z() + cb * lb, zb1 = zb0 + lb;
+    constexpr double kSameHeight = 1e-6;  // m: heights are sums of connection lengths, equal up to round-off
+    if (za1 < zb0 - kSameHeight || zb1 < za0 - kSameHeight) return false;  // sharing an end height counts
+    return (a.foot - b.foot).head<2>().norm() < 0.5 * (sa.connectionDiameter(ca) + sb.connectionDiameter(cb));
+}
+
+}  // namespace
+
+// A point near connection c, at parameter t of its axis: it moves with the axis point
+// q = (1 - t) p_c + t p_c+1 and turns with the nodes' interpolated spin about q. Forces are shared
+// the same way (applyToConnection), so the contact forces do exactly the work their springs store.
+Vec3 ForestMotion::connectionVelocity(const Stem& s, std::size_t c, double t, const Vec3& point) {
+    const Vec3 q = (1 - t) * s.position[c] + t * s.position[c + 1];
+    const Vec3 spin = (1 - t) * s.angularVelocity[c] + t * s.angularVelocity[c + 1];
+    return (1 - t) * s.velocity[c] + t * s.velocity[c + 1] + spin.cross(point - q);
+}
+
+// A standing stem starts moving (and sets the step) once the block could reach it within the
+// next detections (`approach`), so that their contact begins at the stem's step: at the block's
+// own step it would begin centimetres deep.
+void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec3>& centres, double approach) {
+    blockTouches_.beginDetection();
+    const Vec3 omega = block.angularVelocity();
+    for (auto& a : awake_) {
+        const Stem& s = a.stem;
+        std::uint32_t piece = 0;  // pieces of a broken stem move apart: each has its own contacts
+        for (std::size_t c = 0; c < s.connectionCount(); ++c) {
+            if (s.broken(c)) {
+                ++piece;
+                continue;
+            }
+            const Vec3& a0 = s.position[c];
+            const Vec3& a1 = s.position[c + 1];
+            const double r = 0.5 * s.connectionDiameter(c);
+            const double tc = closestOnSegment(block.position, a0, a1);
+            if ((block.position - (a0 + tc * (a1 - a0))).norm() > block.boundingRadius() + r + approach) continue;
+            for (std::uint32_t i = 0; i < centres.size(); ++i) {
+                const double rb = block.spheres()[i].radius;
+                const double t = closestOnSegment(centres[i], a0, a1);
+                ContactGeometry found;
+                const bool touching = touchSpheres(centres[i], rb, a0 + t * (a1 - a0), r, found);
+                const double overlap = found.overlap;
+                if (overlap > -approach) a.moving = true;
+                if (!touching) continue;
+                // One contact per (block sphere, stem piece): the deepest connection; its history
+                // moves with it from one connection to the next.
+                const ContactKey key{i, a.tree, piece, 0};
+                BlockStemTouch* touch = blockTouches_.find(key);
+                if (touch && touch->touching && touch->rawOverlap >= overlap) continue;
+                if (!touch)
+                    touch = &blockTouches_.add(key, BlockStemTouch{i, a.tree, piece, c, t, overlap, startedAt(overlap), ContactGeometry{}, false, c, overlap});
+                ContactGeometry& g = touch->geometry;
+                g = found;
+                g.overlap = std::max(0.0, overlap - touch->history.overlapOffset);
+                g.relativeVelocity = block.velocity + omega.cross(g.point - block.position) - connectionVelocity(s, c, t, g.point);
+                g.meanSpinNormal = 0.5 * (omega + (1 - t) * s.angularVelocity[c] + t * s.angularVelocity[c + 1]).dot(g.normal);
+                touch->connection = c;
+                touch->t = t;
+                touch->rawOverlap = overlap;
+                touch->touching = true;
+            }
+        }
+    }
+    blockTouches_.sweep();
+    // A contact that moved to another connection may find it much deeper in the block (a bent or
+    // lying stem, a contact that began with an offset): like a new contact, it takes on only the
+    // overlap one step's motion can bring, or its spring would store energy no motion loaded.
+    for (auto& touch : blockTouches_) {
+        if (touch.connection != touch.lastConnection) {
+            const double jump = touch.rawOverlap - touch.lastRawOverlap - kMaxOnsetOverlap;
+            if (jump > 0) {
+                touch.history.overlapOffset += jump;
+                touch.geometry.overlap = std::max(0.0, touch.rawOverlap - touch.history.overlapOffset);
+            }
+        }
+        touch.lastConnection = touch.connection;
+        touch.lastRawOverlap = touch.rawOverlap;
+    }
+}
+
+// Pairs of connections of different awake stems that may touch: within their radii plus the skin
+// of each other when listed. The list holds until some node has moved half the skin (then no pair
+// left out can have closed the skin) or the awake stems change.
+void ForestMotion::listStemPairs() {
+    stemPairs_.clear();
+    // Boxes around each awake stem's nodes, widened by its thickest radius and the skin: most pairs
+    // of standing stems are told apart by these alone.
+    boxes_.resize(awake_.size());
+    for (std::size_t k = 0; k < awake_.size(); ++k) {
+        AwakeStem& a = awake_[k];
+        a.listedAt = a.stem.position;
+        Eigen::AlignedBox3d box;
+        for (const Vec3& p : a.stem.position) box.extend(p);
+        const double r = 0.5 * a.stem.diameterAt(0) + 0.5 * kStemPairSkin;
+        boxes_[k] = Eigen::AlignedBox3d(box.min() - Vec3::Constant(r), box.max() + Vec3::Constant(r));
+    }
+    for (std::size_t ia = 0; ia < awake_.size(); ++ia)
+        for (std::size_t ib = ia + 1; ib < awake_.size(); ++ib) {
+            if (!boxes_[ia].intersects(boxes_[ib])) continue;
+            const Stem& A = awake_[ia].stem;
+            const Stem& B = awake_[ib].stem;
+            for (std::size_t ca = 0; ca < A.connectionCount(); ++ca) {
+                if (A.broken(ca)) continue;
+                const Vec3 &a0 = A.position[ca], &a1 = A.position[ca + 1];
+                for (std::size_t cb = 0; cb < B.connectionCount(); ++cb) {
+                    if (B.broken(cb)) continue;
+                    const Vec3 &b0 = B.position[cb], &b1 = B.position[cb + 1];
+                    const double near = 0.5 * (A.connectionDiameter(ca) + B.connectionDiameter(cb)) + kStemPairSkin;
+                    // Cheap rejection on the segments' midpoints before the exact closest points.
+                    const double reach = near + 0.5 * ((a1 - a0).norm() + (b1 - b0).norm());
+                    if ((0.5 * (a0 + a1) - 0.5 * (b0 + b1)).squaredNorm() > reach * reach) continue;
+                    const auto [s, t] = closestBetweenSegments(a0, a1, b0, b1);
+                    if ((a0 + s * (a1 - a0) - b0 - t * (b1 - b0)).squaredNorm() > near * near) continue;
+                    stemPairs_.push_back(ConnectionPair{ia, ib, ca, cb, false});
+                }
+            }
+        }
+    stemPairsStale_ = false;
+}
+
+bool ForestMotion::stemPairsStale() const {
+    if (stemPairsStale_) return true;
+    const double limit2 = 0.25 * kStemPairSkin * kStemPairSkin;
+    for (const AwakeStem& a : awake_) {
+        if (!a.moving) continue;  // never stepped: its nodes are where they were listed
+        for (std::size_t i = 0; i < a.stem.nodeCount(); ++i)
+            if ((a.stem.position[i] - a.listedAt[i]).squaredNorm() > limit2) return true;
+    }
+    return false;
+}
+
+void ForestMotion::detectStemStem() {
+    stemTouches_.beginDetection();
+    if (stemPairsStale()) listStemPairs();
+    for (ConnectionPair& pair : stemPairs_) {
+        const AwakeStem& A = awake_[pair.a];
+        const AwakeStem& B = awake_[pair.b];
+        const std::size_t ca = pair.connectionA, cb = pair.connectionB;
+        const ContactKey key{A.tree, B.tree, static_cast<std::uint32_t>(ca), static_cast<std::uint32_t>(cb)};
+        if (!A.moving && !B.moving) {
+            // Two stems standing still (a stool's stems fused at their foot): the same contact as at the
+            // last check, or none.
+            if (pair.checkedStill) {
+                if (StemStemTouch* touch = stemTouches_.find(key)) touch->touching = true;
+                continue;
+            }
+            pair.checkedStill = true;
+        }
+        if (A.stem.broken(ca) || B.stem.broken(cb)) continue;
+        const Vec3 &a0 = A.stem.position[ca], &a1 = A.stem.position[ca + 1];
+        const Vec3 &b0 = B.stem.position[cb], &b1 = B.stem.position[cb + 1];
+        const double ra = 0.5 * A.stem.connectionDiameter(ca), rb = 0.5 * B.stem.connectionDiameter(cb);
+        const auto [s, t] = closestBetweenSegments(a0, a1, b0, b1);
+        ContactGeometry found;
+        if (!touchSpheres(a0 + s * (a1 - a0), ra, b0 + t * (b1 - b0), rb, found)) continue;
+        const double overlap = found.overlap;
+        // Stem/stem contacts are frictionless (Table 2: phi_t-t = 0), so they carry no history worth
+        // moving along the stems: one contact per pair of connections.
+        StemStemTouch* touch = stemTouches_.find(key);
+        if (!touch) {
+            const bool fused = fusedAtRest(trees_.tree(A.tree), ca, A.stem, trees_.tree(B.tree), cb, B.stem);
+            touch = &stemTouches_.add(key, StemStemTouch{A.tree, B.tree, ca, cb, s, t, startedAt(overlap), ContactGeometry{}, false, fused});
+        }
+        ContactGeometry& g = touch->geometry;
+        g = found;
+        g.overlap = std::max(0.0, overlap - touch->history.overlapOffset);
+        g.relativeVelocity = connectionVelocity(A.stem, ca, s, g.point) - connectionVelocity(B.stem, cb, t, g.point);
+        g.meanSpinNormal = 0.5 * ((1 - s) * A.stem.angularVelocity[ca] + s * A.stem.angularVelocity[ca + 1] +
+                                  (1 - t) * B.stem.angularVelocity[cb] + t * B.stem.angularVelocity[cb + 1])
+                                     .dot(g.normal);
+        touch->s = s;
+        touch->t = t;
+        touch->touching = true;
+    }
+    stemTouches_.sweep();
+}
+
+void ForestMotion::detectStemSoil() {
+    soilTouches_.beginDetection();
+    const double rs = soil_.radius();
+    for (auto& a : awake_) {
+        if (a.soilChecked && !a.moving) continue;
+        a.soilChecked = true;
+        const Stem& s = a.stem;
+        for (std::uint32_t k = 1; k < s.nodeCount(); ++k) {
+            const Vec3& p = s.position[k];
+            const double r = 0.5 * s.diameterAt(s.restHeight(k));
+            if (p.z() - r > soil_.surfaceHeight(p.x(), p.y()) + 0.05) continue;  // soil tops are at the surface
+            nearSoil_.clear();
+            soil_.near(p, r + rs, nearSoil_);
+            for (std::uint32_t id : nearSoil_) {
+                ContactGeometry found;
+                if (!touchSpheres(p, r, soil_.center(id), rs, found)) continue;
+                const double overlap = found.overlap;
+                const ContactKey key{a.tree, k, id, 0};
+                StemSoilTouch* touch = soilTouches_.find(key);
+                if (!touch) touch = &soilTouches_.add(key, StemSoilTouch{a.tree, k, id, startedAt(overlap), ContactGeometry{}, false});
+                ContactGeometry& g = touch->geometry;
+                g = found;
+                g.overlap = std::max(0.0, overlap - touch->history.overlapOffset);
+                g.relativeVelocity = s.velocity[k] + s.angularVelocity[k].cross(g.point - p);
+                g.meanSpinNormal = 0.5 * s.angularVelocity[k].dot(g.normal);
+                g.movingMass = s.mass()[k];  // the soil sphere does not move
+                touch->touching = true;
+            }
+        }
+    }
+    soilTouches_.sweep();
+}
+
+}  // namespace sylva::dem

@@ -22,7 +22,7 @@ enum class StepPhase {
     Block,          // the block integrated
     Sleep,          // stems put to sleep, NaN and fall-through checks
 };
-constexpr std::size_t kStepPhases = 11;
+constexpr std::size_t kStepPhases = static_cast<std::size_t>(StepPhase::Sleep) + 1;  // Sleep stays last
 const char* name(StepPhase phase);  // snake_case, as written in summary.json
 
 struct PhaseTimes {

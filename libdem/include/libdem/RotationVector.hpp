@@ -11,7 +11,9 @@
 
 namespace sylva::dem {
 
-// A Jacobian of the rotation-vector map, I - b [theta]x + c [theta]x^2, kept as its two coefficients:
+// A Jacobian of the rotation-vector map, I - b [theta]x + c [theta]x^2 (the left and right Jacobians
+// of SO(3) and their inverses: Sola, Deray & Atchuthan 2018, "A micro Lie theory for state
+// estimation in robotics", arXiv:1812.01537, the SO(3) example), kept as its two coefficients:
 // the stems only ever apply it (or its transpose) to a vector, which costs two cross products where
 // the 3x3 matrix would cost two matrix products to build.
 struct RotationJacobian {

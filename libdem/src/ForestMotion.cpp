@@ -39,6 +39,12 @@ ForestMotion::ForestMotion(const Scene& scene)
     stemSoilLaw_ = &scene.laws().get(BodyKind::Stem, BodyKind::Soil);
 }
 
+bool ForestMotion::blockTouchesStem() const {
+    for (const auto& t : blockTouches_)
+        if (t.touching) return true;
+    return false;
+}
+
 ForestMotion::AwakeStem* ForestMotion::awake(std::uint32_t tree) {
     for (auto& a : awake_)
         if (a.tree == tree) return &a;

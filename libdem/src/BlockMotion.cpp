@@ -171,8 +171,7 @@ double BlockMotion::timeStep() {
                                   " s; use a smaller step or 0 (automatic)");
         return forced;
     }
-    const double stemSafety = forest_.blockTouchesStem() ? cfg_.integration.stemContactSafety : cfg_.integration.stemSafety;
-    return std::min(cfg_.integration.safety * s.critical(), stemSafety * stems);
+    return std::min(cfg_.integration.safety * s.critical(), cfg_.integration.stemSafety * stems);
 }
 
 // Audited at t, where positions and contact springs are: the leapfrog's velocities are half a step
@@ -209,7 +208,7 @@ void BlockMotion::audit(const Vec3& force, const Vec3& torque, double dt, double
        << "contacts " << forestRise << " J): ";
     if (forestRise > blockRise)
         os << "a stem's step is too large, or a connection between two of its nodes turned too far; lower "
-              "integration.stem_safety and integration.stem_contact_safety, or refine stem.node_spacing_m";
+              "integration.stem_safety or refine stem.node_spacing_m";
     else
         os << "the time step is too large for these contact parameters; lower integration.safety or integration.dt_s";
     throw SimulationError(os.str());

@@ -1,6 +1,5 @@
 #include "libdem/ConnectionBeam.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -239,20 +238,6 @@ HingeWork ConnectionBeam::snap() {
 }
 
 int ConnectionBeam::sectionCount() const { return rule_->count; }
-
-// The flexibility grows with every section's compliance, so it is at least the one of sections all as
-// stiff as the stiffest (elastic or unloading) branch; the rules are symmetric (sum w xi = 0), which
-// makes that flexibility diagonal: diag(c, c sum w xi^2 + 4 / (l^2 k_s)). Its inverse bounds the
-// stiffness from above whatever the sections' state.
-ConnectionBeam::StiffnessBound ConnectionBeam::stiffnessBound() const {
-    const Rule& r = *rule_;
-    double c = elasticCompliance_[0], moment2 = 0;
-    for (int i = 0; i < r.count; ++i) {
-        c = std::min({c, elasticCompliance_[i], unloadingCompliance_[i]});
-        moment2 += r.weight[i] * r.xi[i] * r.xi[i];
-    }
-    return {1 / c, 1 / (c * moment2 + 4 / (length_ * length_ * shearStiffness_))};
-}
 
 Vec2 ConnectionBeam::sectionMoment(int section) const { return moment_ + rule_->xi[section] * change_; }
 

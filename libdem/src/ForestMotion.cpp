@@ -21,6 +21,14 @@ double potentialEnergy(const Stem& s, double g) {
 // Broken or uprooted: parts of it fall and are followed until they rest.
 bool falling(const Stem& s) { return s.anyConnectionBroken() || s.root().failed(); }
 
+// What a spring along n at `point` sees of node i: 1/m + |r x n|^2 / I (r from the node's centre).
+double nodeInverseMass(const Stem& s, std::size_t i, const Vec3& point, const Vec3& n) {
+    double inv = 0;
+    if (s.translates(i)) inv += 1 / s.mass()[i];
+    if (s.rotates(i)) inv += (point - s.position[i]).cross(n).squaredNorm() / s.inertia()[i];
+    return inv;
+}
+
 }  // namespace
 
 ForestMotion::ForestMotion(const Scene& scene)
@@ -29,12 +37,6 @@ ForestMotion::ForestMotion(const Scene& scene)
     blockStemLaw_ = &scene.laws().get(BodyKind::Block, BodyKind::Stem);
     stemStemLaw_ = &scene.laws().get(BodyKind::Stem, BodyKind::Stem);
     stemSoilLaw_ = &scene.laws().get(BodyKind::Stem, BodyKind::Soil);
-}
-
-bool ForestMotion::blockTouchesStem() const {
-    for (const auto& t : blockTouches_)
-        if (t.touching) return true;
-    return false;
 }
 
 ForestMotion::AwakeStem* ForestMotion::awake(std::uint32_t tree) {
@@ -132,46 +134,40 @@ void ForestMotion::wakeNeighbours() {
 }
 
 double ForestMotion::stableStep(const RigidBody& block, StableStep& blockStep) const {
-    // A contact's springs, k_n along n and k_t across it, acting at a point r from a node that carries
-    // a share w of them, add at most the trace of their mass-normalised stiffness to the node's
-    // squared frequency: w^2 [k_n (1/m + |r x n|^2 / I) + k_t (2/m + (2 |r|^2 - |r x n|^2) / I)]
-    // (the two tangent directions' |r x t|^2 sum to 2 |r|^2 - |r x n|^2). They add up per node
-    // (Gershgorin), and on top of the stem's own springs (Weyl): omega^2 = (2 / dt_stem)^2 + max over
-    // nodes of the contacts' sum.
+    // Each contact spring k adds k w^2 (1/m + |arm x n|^2 / I) to the squared frequency of each node
+    // that carries a share w of it; they add up per node (Gershgorin), and on top of the stem's own
+    // springs: omega^2 = (2 / dt_stem)^2 + max over nodes of the contacts' sum.
     for (auto& a : awake_) a.contactOmega2.assign(a.stem.nodeCount(), 0.0);
     auto awakeOf = [this](std::uint32_t tree) -> const AwakeStem& {
         for (const auto& a : awake_)
             if (a.tree == tree) return a;
         throw std::logic_error("contact with a stem that is not awake");
     };
-    // The contact's springs on one node, r from its centre: the bracket above, without w^2.
-    auto springs = [](const Stem& s, std::size_t node, const Vec3& r, const ContactGeometry& g, const ContactLaw& law) {
-        const double across = r.cross(g.normal).squaredNorm();
-        const double invMass = s.translates(node) ? 1 / s.mass()[node] : 0.0;
-        const double invInertia = s.rotates(node) ? 1 / s.inertia()[node] : 0.0;
-        return law.normalStiffness(g) * (invMass + across * invInertia) +
-               law.tangentialStiffness(g) * (2 * invMass + (2 * r.squaredNorm() - across) * invInertia);
-    };
-    auto onConnection = [&](std::uint32_t tree, std::size_t c, double t, const ContactGeometry& g, const ContactLaw& law) {
+    auto onConnection = [&](std::uint32_t tree, std::size_t c, double t, const ContactGeometry& g, double k) {
         const AwakeStem& a = awakeOf(tree);
-        // The force is carried as if at the axis point, its moment about it shared likewise
-        // (applyToConnection): the lever is from the axis point.
-        const Vec3 r = g.point - ((1 - t) * a.stem.position[c] + t * a.stem.position[c + 1]);
-        for (const auto& [node, w] : {std::pair<std::size_t, double>{c, 1 - t}, {c + 1, t}})
-            a.contactOmega2[node] += w * w * springs(a.stem, node, r, g, law);
+        const Vec3 arm = (g.point - ((1 - t) * a.stem.position[c] + t * a.stem.position[c + 1])).cross(g.normal);
+        for (const auto& [node, w] : {std::pair<std::size_t, double>{c, 1 - t}, {c + 1, t}}) {
+            double inv = 0;
+            if (a.stem.translates(node)) inv += 1 / a.stem.mass()[node];
+            if (a.stem.rotates(node)) inv += arm.squaredNorm() / a.stem.inertia()[node];
+            a.contactOmega2[node] += k * w * w * inv;
+        }
     };
     for (const auto& t : blockTouches_) {
-        blockStep.add(blockStemLaw_->normalStiffness(t.geometry), 0, block.inverseMassAlong(t.geometry.point, t.geometry.normal));
-        onConnection(t.tree, t.connection, t.t, t.geometry, *blockStemLaw_);
+        const double k = blockStemLaw_->normalStiffness(t.geometry);
+        blockStep.add(k, 0, block.inverseMassAlong(t.geometry.point, t.geometry.normal));
+        onConnection(t.tree, t.connection, t.t, t.geometry, k);
     }
     for (const auto& t : stemTouches_) {
         if (t.ignored) continue;
-        onConnection(t.treeA, t.connectionA, t.s, t.geometry, *stemStemLaw_);
-        onConnection(t.treeB, t.connectionB, t.t, t.geometry, *stemStemLaw_);
+        const double k = stemStemLaw_->normalStiffness(t.geometry);
+        onConnection(t.treeA, t.connectionA, t.s, t.geometry, k);
+        onConnection(t.treeB, t.connectionB, t.t, t.geometry, k);
     }
     for (const auto& t : soilTouches_) {
         const AwakeStem& a = awakeOf(t.tree);
-        a.contactOmega2[t.node] += springs(a.stem, t.node, t.geometry.point - a.stem.position[t.node], t.geometry, *stemSoilLaw_);
+        a.contactOmega2[t.node] += stemSoilLaw_->normalStiffness(t.geometry) *
+                                   nodeInverseMass(a.stem, t.node, t.geometry.point, t.geometry.normal);
     }
     double limit = std::numeric_limits<double>::infinity();
     for (const auto& a : awake_) {

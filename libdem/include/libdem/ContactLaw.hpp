@@ -43,10 +43,8 @@ public:
     virtual Vec3 force(const ContactGeometry& g, ContactHistory& h, double dt, DissipationLedger& ledger) const = 0;
     // Energy stored in the contact's springs (normal + tangential), for the energy audit.
     virtual double storedEnergy(const ContactGeometry& g, const ContactHistory& h) const = 0;
-    // Normal and tangential stiffness and dashpot coefficient at this contact: they set the stable
-    // time step.
+    // Normal stiffness and dashpot coefficient at this contact: they set the stable time step.
     virtual double normalStiffness(const ContactGeometry& g) const = 0;
-    virtual double tangentialStiffness(const ContactGeometry& g) const = 0;
     virtual double dampingCoefficient() const { return 0.0; }
 };
 

@@ -29,7 +29,6 @@ public:
 
     bool empty() const { return trees_.size() == 0; }
     std::size_t awakeCount() const { return awake_.size(); }
-    bool blockTouchesStem() const;
 
     // Wakes the stems the block is about to reach, then finds the block/stem, stem/stem and
     // stem/soil contacts (histories carried, also when a contact slides along a stem).

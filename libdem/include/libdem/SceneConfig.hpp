@@ -49,11 +49,7 @@ struct SingleTreeConfig {
 
 struct IntegrationConfig {
     double safety = 0.3;        // dt = safety x stable limit of the block's springs
-    // and at most this fraction of the awake stems' limit (Stem::stableTimeStep: within 2 % of the
-    // true one for the calibrated stems): stemContactSafety while the block touches a stem, where
-    // the energy it gives the tree is decided, stemSafety otherwise (stems swaying, pieces falling).
-    double stemSafety = 0.8;
-    double stemContactSafety = 0.4;
+    double stemSafety = 0.8;    // and at most stemSafety x the awake stems' limit (a Gershgorin bound, 1.1-2.9x below the true one)
     double forcedDt = 0;        // > 0: use this step (refused if above the stable limit)
     int anticipatedContacts = 4;  // the step stays stable for this many new contacts at once
     double energyTolerance = 0.1;  // audit: relative energy growth that stops a run (SimulationError)

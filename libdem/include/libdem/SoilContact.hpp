@@ -23,7 +23,6 @@ public:
     Vec3 force(const ContactGeometry& g, ContactHistory& h, double dt, DissipationLedger& ledger) const override;
     double storedEnergy(const ContactGeometry& g, const ContactHistory& h) const override;
     double normalStiffness(const ContactGeometry&) const override { return kn_; }
-    double tangentialStiffness(const ContactGeometry&) const override { return kt_; }
     double dampingCoefficient() const override { return alpha_; }
     double tangentialStiffness() const { return kt_; }  // K_t (Eq. 19)
 

@@ -30,7 +30,6 @@ public:
     Vec3 force(const ContactGeometry& g, ContactHistory& h, double dt, DissipationLedger& ledger) const override;
     double storedEnergy(const ContactGeometry& g, const ContactHistory& h) const override;
     double normalStiffness(const ContactGeometry& g) const override;  // Eq. 22: the elastic (unloading) one
-    double tangentialStiffness(const ContactGeometry& g) const override { return kappa_ * normalStiffness(g); }
     double crushingStiffness(const ContactGeometry& g) const;         // k_c; infinity without crushing
 
 private:
@@ -44,7 +43,6 @@ public:
     Vec3 force(const ContactGeometry& g, ContactHistory& h, double dt, DissipationLedger& ledger) const override;
     double storedEnergy(const ContactGeometry& g, const ContactHistory& h) const override;
     double normalStiffness(const ContactGeometry& g) const override;  // Eq. 23
-    double tangentialStiffness(const ContactGeometry& g) const override { return kappa_ * normalStiffness(g); }
 
 private:
     double er_, kappa_, tanPhi_;

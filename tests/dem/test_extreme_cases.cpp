@@ -225,7 +225,11 @@ TEST(ExtremeSpeed, BlockHittingFlatGroundAtFortyMetresPerSecondStops) {
 TEST(ExtremeImpacts, HeadOnImpactStopsTheBlockAGrazingOneBarelySlowsIt) {
     const std::vector<std::string> paper = kSphere + std::vector<std::string>{"stem.parameters=toe2018"};
     const RunResult headOn = run(singleTree(paper + std::vector<std::string>{"block.eccentricity=0"}));
-    const RunResult grazing = run(singleTree(paper + std::vector<std::string>{"block.eccentricity=0.99"}));
+    // Where the graze pushed the block is read 0.9 s after it (13 m on): by 3 s the soil's bumps
+    // have moved it sideways by as much, one way or the other with the step (at stem_safety 0.2 it
+    // stopped 0.17 m on the stem's side, at the default 0.8 0.16 m beyond; at 0.5, 0.8 and 1.2 s it
+    // is 0.16, 0.23 and 0.27 m beyond at any step).
+    const RunResult grazing = run(singleTree(paper + std::vector<std::string>{"block.eccentricity=0.99", "stop.max_time_s=1"}));
     ASSERT_EQ(headOn.impacts.size(), 1u);
     ASSERT_EQ(grazing.impacts.size(), 1u);
     const TreeImpact &h = headOn.impacts[0], &g = grazing.impacts[0];
@@ -241,7 +245,7 @@ TEST(ExtremeImpacts, HeadOnImpactStopsTheBlockAGrazingOneBarelySlowsIt) {
     // deflection by up to 25 deg).
     EXPECT_GT(g.energyAfter, 0.9 * g.energyBefore);
     // ... pushed away from the stem, toward +y where it passed.
-    EXPECT_GT(grazing.stop.y(), grazing.release.y());
+    EXPECT_GT(grazing.stop.y(), grazing.release.y() + 0.1);
 }
 
 // phi = 0: the soil's force on a sphere is along the line of centres, through the block's centre:

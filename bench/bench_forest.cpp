@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <numeric>
 #include <string>
 
 #include "libdem/Campaign.hpp"
@@ -26,6 +27,7 @@ struct Timing {
     std::vector<double> cpu, runout;
     long impacts = 0;
     dem::PhaseTimes phases;
+    dem::NodeSteps nodeSteps;
 };
 
 Timing timeCampaign(const dem::Scene& scene, int runs, int threads, unsigned long seed) {
@@ -42,6 +44,7 @@ Timing timeCampaign(const dem::Scene& scene, int runs, int threads, unsigned lon
         t.runout.push_back(r.runoutAlongSlope);
         t.impacts += static_cast<long>(r.impacts.size());
         t.phases += r.phases;
+        t.nodeSteps += r.nodeSteps;
     }
     return t;
 }
@@ -81,6 +84,10 @@ int main(int argc, char** argv) {
     for (std::size_t p = 0; p < dem::kStepPhases; ++p)
         std::printf("  %-20s %5.1f %%\n", dem::name(static_cast<dem::StepPhase>(p)),
                     100 * with.phases.seconds[p] / with.phases.total());
+    const double cpu = std::accumulate(with.cpu.begin(), with.cpu.end(), 0.0);
+    std::printf("stem node-steps: %.3g, %.1f %% while the block touches the stem, %.1f %% after it left; %.2f million per CPU second of the runs\n",
+                double(with.nodeSteps.total()), 100.0 * with.nodeSteps.duringContact / std::max<double>(1, with.nodeSteps.total()),
+                100.0 * with.nodeSteps.afterContact / std::max<double>(1, with.nodeSteps.total()), with.nodeSteps.total() / cpu / 1e6);
     std::printf("peak resident memory: %.0f MB\n", ru.ru_maxrss / 1024.0);
     return 0;
 }

@@ -152,6 +152,7 @@ RunResult simulateBlock(const Scene& scene, int run, std::uint64_t seed, const R
     if (options.recordTrajectory) r.trajectory.push_back(sample(block, motion.time()));
     r.steps = motion.steps();
     r.phases = motion.phases();
+    r.nodeSteps = motion.nodeSteps();
     r.duration = motion.time();
     r.meanDt = r.duration / std::max(1L, r.steps);
     r.stop = block.position;

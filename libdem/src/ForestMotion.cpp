@@ -236,6 +236,7 @@ void ForestMotion::integrate(double dt) {
             stems += *a.standingBudget;
             continue;
         }
+        (a.lastBlockContact == now_ ? nodeSteps_.duringContact : nodeSteps_.afterContact) += a.stem.nodeCount();
         const double externalBefore = a.stem.ledger.externalWork;
         const StemEnergy e = stepper_.step(a.stem, dt, a.loads);
         // The stem's own budget without the work of the contact loads, which the contacts' springs

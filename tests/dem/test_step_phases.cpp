@@ -7,6 +7,7 @@
 #include <string>
 
 #include "libdem/BlockRun.hpp"
+#include "libdem/Stem.hpp"
 #include "libdem/StepPhases.hpp"
 
 using namespace sylva::dem;
@@ -36,4 +37,21 @@ TEST(StepPhases, PhasesArePartOfTheRunAndTheTreeIsStepped) {
     for (const double s : r.phases.seconds) EXPECT_GE(s, 0.0);
     EXPECT_GT(r.phases[StepPhase::Stems], 0.0);
     EXPECT_GT(r.phases[StepPhase::BlockStem], 0.0);
+}
+
+// One stem is stepped while the block touches it and after it leaves: both counts are multiples of
+// its node count, the first at most one per step; without a forest there is nothing to count.
+TEST(StepPhases, NodeStepsCountTheStemsWorkDuringAndAfterTheImpact) {
+    const Scene scene(loadScene(std::string(SYLVAROCK_DATA) + "/scenes/single-tree.ini", {"stop.max_time_s=3"}));
+    const RunResult r = simulateBlock(scene, 0, 1);
+    ASSERT_EQ(r.impacts.size(), 1u);
+    const SceneConfig& cfg = scene.config();
+    const std::uint64_t nodes = Stem(beechStem(cfg.tree.dbhCm), cfg.stem, Vec3::Zero(), StemFoot::RootSpring).nodeCount();
+    EXPECT_GT(r.nodeSteps.duringContact, 0u);
+    EXPECT_GT(r.nodeSteps.afterContact, 0u);
+    EXPECT_EQ(r.nodeSteps.duringContact % nodes, 0u);
+    EXPECT_EQ(r.nodeSteps.afterContact % nodes, 0u);
+    EXPECT_LE(r.nodeSteps.total(), static_cast<std::uint64_t>(r.steps) * nodes);
+    const Scene bare(loadScene(std::string(SYLVAROCK_DATA) + "/scenes/no-forest.ini", {"stop.max_time_s=3"}));
+    EXPECT_EQ(simulateBlock(bare, 0, 1).nodeSteps.total(), 0u);
 }

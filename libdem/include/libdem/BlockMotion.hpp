@@ -24,6 +24,7 @@ public:
     double time() const { return t_; }
     long steps() const { return steps_; }
     const PhaseTimes& phases() const { return phases_; }  // over the steps so far
+    const NodeSteps& nodeSteps() const { return forest_.nodeSteps(); }
     RigidBody& block() { return block_; }  // e.g. to give the block an initial velocity
     const RigidBody& block() const { return block_; }
     bool touching() const { return !touches_.empty(); }

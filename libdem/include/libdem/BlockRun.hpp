@@ -60,6 +60,7 @@ struct RunResult {
     long steps = 0;
     double meanDt = 0;
     PhaseTimes phases;  // where its steps' time went
+    NodeSteps nodeSteps;  // its stems' work
     EnergyBudget energy;
     std::vector<TreeImpact> impacts;
     ForestLedger forestEnergy;

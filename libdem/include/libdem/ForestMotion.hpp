@@ -50,6 +50,7 @@ public:
     // of the forest's contacts, plus what left it (ledger); minus the potential energy the stems
     // had when they were woken (they enter the budget then).
     double budgetTerm() const { return budget_; }
+    const NodeSteps& nodeSteps() const { return nodeSteps_; }
     ForestLedger ledger() const;
 
 private:
@@ -142,6 +143,7 @@ private:
     int sinceNeighbourCheck_ = 0;
 
     double budget_ = 0;
+    NodeSteps nodeSteps_;
 };
 
 }  // namespace sylva::dem

@@ -7,6 +7,7 @@
 #include <array>
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
 
 namespace sylva::dem {
 
@@ -32,6 +33,18 @@ struct PhaseTimes {
     double operator[](StepPhase p) const { return seconds[static_cast<std::size_t>(p)]; }
     double total() const;
     PhaseTimes& operator+=(const PhaseTimes& other);
+};
+
+// The stems' node-steps, the unit of a forested run's work (bench/bench_stem_step times one): while
+// the block touches the stem, and after it has left it (swaying, falling) until the stem sleeps.
+struct NodeSteps {
+    std::uint64_t duringContact = 0, afterContact = 0;
+    std::uint64_t total() const { return duringContact + afterContact; }
+    NodeSteps& operator+=(const NodeSteps& other) {
+        duringContact += other.duringContact;
+        afterContact += other.afterContact;
+        return *this;
+    }
 };
 
 // Laps a steady clock over a step: each lap books the time since the previous one to the phase that

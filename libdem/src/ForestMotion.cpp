@@ -236,6 +236,7 @@ void ForestMotion::integrate(double dt) {
             stems += *a.standingBudget;
             continue;
         }
+        // lastBlockContact is set to the step's time at each touch: equal, the block touches it now.
         (a.lastBlockContact == now_ ? nodeSteps_.duringContact : nodeSteps_.afterContact) += a.stem.nodeCount();
         const double externalBefore = a.stem.ledger.externalWork;
         const StemEnergy e = stepper_.step(a.stem, dt, a.loads);

@@ -13,6 +13,7 @@ struct Command {
     std::string name;
     std::string summary;  // one line for `sylvarock --help`
     int (*run)(int argc, const char* const* argv);  // argv[0] is the subcommand's name
+    bool spreadsOverRanks = false;  // runs under mpirun with several ranks (see libassess/MpiWorld.hpp)
 };
 
 const std::vector<Command>& commands();

@@ -2,7 +2,9 @@
 // bootstrap intervals, rankings and correlations (paper Sect. 2.3.3, 3.3; libassess).
 #include <chrono>
 #include <cstdio>
+#include <exception>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,6 +12,7 @@
 #include "ProgressBar.hpp"
 #include "libassess/Assessment.hpp"
 #include "libassess/CampaignPlan.hpp"
+#include "libassess/MpiWorld.hpp"
 #include "libassess/Report.hpp"
 #include "libstand/InputError.hpp"
 
@@ -18,7 +21,8 @@ namespace {
 
 // One line on a terminal, redrawn after each run: which campaign, how far, how long left.
 
-int runAssess(int argc, const char* const* argv) {
+// The options, or nothing when --help was asked for.
+std::optional<assess::AssessmentOptions> readOptions(int argc, const char* const* argv) {
     po::options_description o("assess");
     std::vector<std::string> stands, sets;
     o.add_options()
@@ -40,8 +44,9 @@ int runAssess(int argc, const char* const* argv) {
                "[--realisations K] [--baseline-runs B] [--seed S] [--resume]",
                "  sylvarock assess --stand data/stands/GR1 --stand data/stands/PY1 --scene data/scenes/no-forest.ini \\\n"
                "      --runs 100 --realisations 5 --baseline-runs 1000 --seed 4 --out out/assess\n"
-               "  (after an interruption, the same command with --resume finishes it)\n"))
-        return 0;
+               "  (after an interruption, the same command with --resume finishes it)\n"
+               "  mpirun -np 8 sylvarock assess ... --threads 1   (8 MPI ranks, same results; docs/cluster.md)\n"))
+        return std::nullopt;
     if (stands.empty()) throw InputError("--stand PREFIX is required (e.g. data/stands/GR1)");
     if (!vm.count("scene")) throw InputError("--scene is required (e.g. data/scenes/no-forest.ini)");
     if (!vm.count("out")) throw InputError("--out DIR is required");
@@ -61,6 +66,25 @@ int runAssess(int argc, const char* const* argv) {
     a.threads = threadCount(vm);
     a.bootstrapReplicates = vm["bootstrap"].as<int>();
     a.confidence = confidence;
+    return a;
+}
+
+int runAssess(int argc, const char* const* argv) {
+    const assess::MpiWorld& world = assess::MpiWorld::current();
+    std::optional<assess::AssessmentOptions> read;
+    std::exception_ptr failure;
+    try {
+        read = readOptions(argc, argv);
+    } catch (...) {
+        failure = std::current_exception();
+    }
+    world.agree(failure);  // under mpirun, a bad option is reported once, by rank 0
+    if (!read) return 0;
+    assess::AssessmentOptions& a = *read;
+    if (!world.coordinator()) {
+        assess::serveAssessment(a);
+        return 0;
+    }
     a.onNote = [](const std::string& text) { std::cerr << "sylvarock assess: " << text << "\n"; };
     ProgressBar progress(stderrIsTerminal());
     a.onRunDone = [&progress](const std::string& campaign, int done, int total) { progress.update(done, total, campaign); };
@@ -86,7 +110,7 @@ int runAssess(int argc, const char* const* argv) {
     return 0;
 }
 
-const CommandRegistration reg{{"assess", "protection index PF50 of stands with intervals, ranks and correlations", &runAssess}};
+const CommandRegistration reg{{"assess", "protection index PF50 of stands with intervals, ranks and correlations", &runAssess, true}};
 
 }  // namespace
 }  // namespace sylva::cli

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "Cli.hpp"
+#include "libassess/MpiWorld.hpp"
 #include "libstand/InputError.hpp"
 
 namespace {
@@ -30,7 +31,15 @@ int main(int argc, char** argv) {
     for (const auto& c : sylva::cli::commands()) {
         if (c.name != argv[1]) continue;
         try {
+            const sylva::assess::MpiWorld world(&argc, &argv);
+            if (world.size() > 1 && !c.spreadsOverRanks)
+                world.agree(world.coordinator() ? std::make_exception_ptr(sylva::InputError(
+                                                      "sylvarock " + c.name + " does not spread over MPI ranks: run it "
+                                                      "without mpirun (sylvarock assess does)"))
+                                                : nullptr);
             return c.run(argc - 1, argv + 1);
+        } catch (const sylva::assess::PeerFailed&) {
+            return 0;
         } catch (const sylva::InputError& e) {
             std::cerr << "sylvarock " << c.name << ": error: " << e.what() << "\n";
             return 2;

@@ -1,8 +1,12 @@
 #include "libassess/Assessment.hpp"
 
+#include <exception>
+#include <functional>
 #include <memory>
 
 #include "libassess/CampaignRunner.hpp"
+#include "libassess/CampaignStore.hpp"
+#include "libassess/MpiWorld.hpp"
 #include "libdem/SceneConfig.hpp"
 #include "libstand/InputError.hpp"
 #include "libstand/Inventory.hpp"
@@ -11,10 +15,17 @@
 
 namespace sylva::assess {
 
-AssessmentResults runAssessment(const AssessmentOptions& options) {
-    const auto note = [&](const std::string& text) {
-        if (options.onNote) options.onNote(text);
-    };
+namespace {
+
+// What every rank reads from the inputs, the same on each.
+struct Inputs {
+    std::vector<stand::StandCatalogue> catalogues;
+    std::vector<ForestSummary> inventories;
+    std::shared_ptr<const dem::Scene> bareScene;
+    std::vector<Campaign> plan;
+};
+
+Inputs readInputs(const AssessmentOptions& options, const std::function<void(const std::string&)>& note) {
     const AssessmentDesign& design = options.design;
     validate(design);
     if (options.bootstrapReplicates < 100)
@@ -25,20 +36,38 @@ AssessmentResults runAssessment(const AssessmentOptions& options) {
     if (!sceneConfig.forestFile.empty())
         throw InputError(design.sceneFile, 0, "the scene places a forest (" + sceneConfig.forestFile +
                                                   "); assess generates its own forests: give a scene without one");
-    std::vector<stand::StandCatalogue> catalogues;
-    std::vector<ForestSummary> inventories;
+    Inputs in;
     for (const auto& s : design.stands) {
         stand::Inventory inventory = stand::readInventory(s.stemsCsv, s.plotsCsv);
         inventory.name = s.name;
         for (const auto& w : inventory.warnings) note("stand " + s.name + ": warning: " + w);
-        inventories.push_back(summariseInventory(stand::standStatistics(inventory), inventory.hasDiameters));
-        catalogues.emplace_back(inventory, s.stemsCsv);
+        in.inventories.push_back(summariseInventory(stand::standStatistics(inventory), inventory.hasDiameters));
+        in.catalogues.emplace_back(inventory, s.stemsCsv);
     }
-    const auto bareScene = std::make_shared<const dem::Scene>(std::move(sceneConfig));
-    forestExtent(*bareScene);  // refuses a terrain without room for a forest before anything is written
+    in.bareScene = std::make_shared<const dem::Scene>(std::move(sceneConfig));
+    forestExtent(*in.bareScene);  // refuses a terrain without room for a forest before anything is written
+    in.plan = planCampaigns(design);
+    return in;
+}
 
-    const std::vector<Campaign> plan = planCampaigns(design);
-    CampaignStore store(options.outDir, design, plan, options.resume);
+}  // namespace
+
+AssessmentResults runAssessment(const AssessmentOptions& options) {
+    const auto note = [&](const std::string& text) {
+        if (options.onNote) options.onNote(text);
+    };
+    Inputs in;
+    std::unique_ptr<CampaignStore> opened;
+    std::exception_ptr failure;
+    try {
+        in = readInputs(options, note);
+        opened = std::make_unique<CampaignStore>(options.outDir, options.design, in.plan, options.resume);
+    } catch (...) {
+        failure = std::current_exception();
+    }
+    MpiWorld::current().agree(failure);
+    CampaignStore& store = *opened;
+    const std::vector<Campaign>& plan = in.plan;
     for (const auto& n : store.notes()) note(n);
     int stored = 0, total = 0;
     for (std::size_t c = 0; c < plan.size(); ++c) {
@@ -51,26 +80,39 @@ AssessmentResults runAssessment(const AssessmentOptions& options) {
     RunnerSettings runner;
     runner.threads = options.threads;
     runner.onRunDone = options.onRunDone;
-    runner.onRunFailed = [&options](const std::string& campaign, const dem::RunResult& r) {
-        if (options.onNote)
-            options.onNote("warning: " + campaign + " run " + std::to_string(r.run) + " (seed " + std::to_string(r.seed) +
-                           ") stopped on a numerical error and is left out: " + r.failure);
+    runner.onRunFailed = [&note](const std::string& campaign, const RunRecord& r, const std::string& why) {
+        note("warning: " + campaign + " run " + std::to_string(r.run) + " (seed " + std::to_string(r.seed) +
+             ") stopped on a numerical error and is left out: " + why);
     };
     const std::size_t notesBefore = store.notes().size();
-    runMissing(plan, store, bareScene, catalogues, runner);
+    runMissing(plan, store, in.bareScene, in.catalogues, runner);
     for (std::size_t n = notesBefore; n < store.notes().size(); ++n) note(store.notes()[n]);
 
     BootstrapSettings bootstrap;
     bootstrap.replicates = options.bootstrapReplicates;
     bootstrap.confidence = options.confidence;
-    AssessmentResults results = analyse(design, plan, store, inventories, bootstrap);
-    const auto& soil = bareScene->soil();
+    AssessmentResults results = analyse(options.design, plan, store, in.inventories, bootstrap);
+    const auto& soil = in.bareScene->soil();
     results.terrainXmin = soil.xmin();
     results.terrainXmax = soil.xmax();
     results.terrainYmin = soil.ymin();
     results.terrainYmax = soil.ymax();
-    results.forestStartX = forestExtent(*bareScene).lower().x();
+    results.forestStartX = forestExtent(*in.bareScene).lower().x();
     return results;
+}
+
+void serveAssessment(const AssessmentOptions& options) {
+    Inputs in;
+    std::exception_ptr failure;
+    try {
+        in = readInputs(options, [](const std::string&) {});
+    } catch (...) {
+        failure = std::current_exception();
+    }
+    MpiWorld::current().agree(failure);
+    RunnerSettings runner;
+    runner.threads = options.threads;
+    serveCampaigns(in.plan, in.bareScene, in.catalogues, runner);
 }
 
 }  // namespace sylva::assess

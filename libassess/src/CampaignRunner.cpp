@@ -1,14 +1,19 @@
 #include "libassess/CampaignRunner.hpp"
 
-#include <atomic>
-#include <exception>
+#include <algorithm>
+#include <chrono>
 #include <filesystem>
+#include <functional>
+#include <limits>
 #include <mutex>
-#include <stdexcept>
+#include <optional>
 #include <thread>
 
+#include "CampaignDispatcher.hpp"
+#include "CampaignJob.hpp"
+#include "JobRunner.hpp"
 #include "libassess/ForestSummary.hpp"
-#include "libdem/Campaign.hpp"
+#include "libassess/MpiWorld.hpp"
 #include "libstand/ForestGenerator.hpp"
 #include "libstand/InputError.hpp"
 
@@ -18,34 +23,28 @@ namespace {
 
 constexpr double kUnforestedRunM = 30;  // Sect. 2.3.2: the blocks reach ~15 m/s before the forest
 
-// A campaign's scene, built on first use and dropped after the campaign's last run (a forested scene
-// holds its own soil bed: keeping all of them would hold the whole design in memory).
-struct SceneSlot {
-    std::mutex mutex;
-    std::shared_ptr<const dem::Scene> scene;
-    int pending = 0;  // runs of this campaign not finished yet (guarded by mutex)
-};
+// Tags of the runners' messages. A worker's request carries the outcome of its last job (empty on its
+// first request); the coordinator answers each with a job or with kStop; a worker whose threads have
+// all stopped says kDone.
+enum Tag : int { kRequest = 1, kJob = 2, kStop = 3, kDone = 4 };
 
-stand::Forest generate(const Campaign& c, const stand::StandCatalogue& catalogue, const stand::Window& extent) {
-    stand::GenerationSettings g;
-    g.structure = c.structure;
-    g.seed = c.forestSeed;
-    return stand::generateForest(catalogue, extent, g).forest;
+using Exchange = std::function<std::optional<CampaignJob>(std::optional<JobOutcome> finished)>;
+
+// `threads` threads, each running jobs until `exchange` has none left, handing in each outcome as it
+// asks for the next job.
+void runThreads(int threads, JobRunner& runner, const Exchange& exchange) {
+    auto work = [&] {
+        std::optional<JobOutcome> finished;
+        while (const std::optional<CampaignJob> job = exchange(std::move(finished))) finished = runner.run(*job);
+    };
+    std::vector<std::thread> pool;
+    for (int t = 0; t < threads; ++t) pool.emplace_back(work);
+    for (auto& t : pool) t.join();
 }
 
-std::shared_ptr<const dem::Scene> forestScene(const Campaign& c, CampaignStore& store, const dem::Scene& bare,
-                                              const stand::StandCatalogue& catalogue) {
-    const stand::Window extent = forestExtent(bare);
-    stand::Forest forest = generate(c, catalogue, extent);
-    writeForestSummary(store.forestSummaryPath(c), summariseForest(forest, extent));
-    return std::make_shared<const dem::Scene>(bare.config(), std::move(forest));
-}
-
-// The error of a job, with the campaign it belongs to (runCampaign's message names the run and seed).
-std::exception_ptr inCampaign(const Campaign& c, const std::exception& e) {
-    const std::string what = "campaign " + c.id + ": " + e.what();
-    if (dynamic_cast<const InputError*>(&e)) return std::make_exception_ptr(InputError(what));
-    return std::make_exception_ptr(std::runtime_error(what));
+int threadCount(int requested, int jobs) {
+    const int threads = requested > 0 ? requested : static_cast<int>(std::thread::hardware_concurrency());
+    return std::max(1, std::min(threads, jobs));
 }
 
 }  // namespace
@@ -62,73 +61,65 @@ stand::Window forestExtent(const dem::Scene& bareScene) {
 
 void runMissing(const std::vector<Campaign>& plan, CampaignStore& store, std::shared_ptr<const dem::Scene> bareScene,
                 const std::vector<stand::StandCatalogue>& catalogues, const RunnerSettings& settings) {
-    std::vector<SceneSlot> slots(plan.size());
-    std::vector<std::pair<std::size_t, int>> jobs;
     for (std::size_t c = 0; c < plan.size(); ++c) {
-        const auto missing = store.log(c).missingRuns();
-        for (int run : missing) jobs.emplace_back(c, run);
-        slots[c].pending = static_cast<int>(missing.size());
-        if (!plan[c].forested) {
-            slots[c].scene = bareScene;
-        } else if (missing.empty() && !forestSummaryIntact(store.forestSummaryPath(plan[c]))) {
-            // All runs are stored but the forest's statistics were lost, damaged or edited: only they
-            // are computed again (the forest is its seed's).
-            if (std::filesystem::exists(store.forestSummaryPath(plan[c])))
-                store.note(store.forestSummaryPath(plan[c]) + ": checksum mismatch (edited or damaged): computed again");
-            const stand::Window extent = forestExtent(*bareScene);
-            writeForestSummary(store.forestSummaryPath(plan[c]),
-                               summariseForest(generate(plan[c], catalogues.at(plan[c].stand), extent), extent));
-        }
+        if (!plan[c].forested || !store.log(c).missingRuns().empty() || forestSummaryIntact(store.forestSummaryPath(plan[c])))
+            continue;
+        // All runs are stored but the forest's statistics were lost, damaged or edited: only they are
+        // computed again (the forest is its seed's).
+        if (std::filesystem::exists(store.forestSummaryPath(plan[c])))
+            store.note(store.forestSummaryPath(plan[c]) + ": checksum mismatch (edited or damaged): computed again");
+        const stand::Window extent = forestExtent(*bareScene);
+        writeForestSummary(store.forestSummaryPath(plan[c]),
+                           summariseForest(campaignForest(plan[c], catalogues.at(plan[c].stand), extent), extent));
     }
-    if (jobs.empty()) return;
-
-    std::atomic<std::size_t> next{0};
-    std::mutex storeMutex;
-    std::exception_ptr failure;
-    std::atomic<bool> stop{false};
-    int done = 0;
-    const int total = static_cast<int>(jobs.size());
-    auto worker = [&] {
-        while (!stop) {
-            const std::size_t j = next.fetch_add(1);
-            if (j >= jobs.size()) return;
-            const auto [c, run] = jobs[j];
-            const Campaign& campaign = plan[c];
-            try {
-                std::shared_ptr<const dem::Scene> scene;
-                {
-                    std::lock_guard<std::mutex> lock(slots[c].mutex);
-                    if (!slots[c].scene) slots[c].scene = forestScene(campaign, store, *bareScene, catalogues.at(campaign.stand));
-                    scene = slots[c].scene;
-                }
-                dem::CampaignOptions options;
-                options.only = {run};
-                options.seed = campaign.runSeed;
-                options.threads = 1;
-                const dem::RunResult result = dem::runCampaign(*scene, options).front();
-                const RunRecord record = toRecord(result);
-                {
-                    std::lock_guard<std::mutex> lock(storeMutex);
-                    if (result.reason == dem::StopReason::Failed && settings.onRunFailed) settings.onRunFailed(campaign.id, result);
-                    store.log(c).append(record);
+    CampaignDispatcher dispatcher(plan, store, settings);
+    JobRunner runner(plan, bareScene, catalogues);
+    const MpiWorld& world = MpiWorld::current();
+    const int localThreads = threadCount(settings.threads, dispatcher.runsToDo());
+    const Exchange local = [&](std::optional<JobOutcome> finished) { return dispatcher.exchange(0, std::move(finished)); };
+    if (world.size() == 1) {
+        if (dispatcher.runsToDo() > 0) runThreads(localThreads, runner, local);
+    } else {
+        // This rank's threads run jobs too; the main thread answers the other ranks.
+        std::thread own([&] { runThreads(localThreads, runner, local); });
+        try {
+            for (int done = 0; done < world.size() - 1;) {
+                std::optional<MpiWorld::Message> m = world.poll();
+                if (!m) {
+                    std::this_thread::sleep_for(std::chrono::microseconds(200));
+                } else if (m->tag == kDone) {
                     ++done;
-                    if (settings.onRunDone) settings.onRunDone(campaign.id, done, total);
+                } else {
+                    std::optional<JobOutcome> finished;
+                    if (!m->bytes.empty()) finished = decodeOutcome(m->bytes);
+                    const std::optional<CampaignJob> job = dispatcher.exchange(m->source, std::move(finished));
+                    world.send(m->source, job ? kJob : kStop, job ? encode(*job) : std::string());
                 }
-                std::lock_guard<std::mutex> lock(slots[c].mutex);
-                if (--slots[c].pending == 0 && campaign.forested) slots[c].scene.reset();
-            } catch (const std::exception& e) {
-                std::lock_guard<std::mutex> lock(storeMutex);
-                if (!failure) failure = inCampaign(campaign, e);
-                stop = true;
             }
+        } catch (const std::exception&) {
+            // MPI itself failed: this rank's threads stop after their runs, and its exit makes mpirun
+            // end the others.
+            dispatcher.fail(std::current_exception());
         }
+        own.join();
+    }
+    dispatcher.rethrowFailure();
+}
+
+void serveCampaigns(const std::vector<Campaign>& plan, std::shared_ptr<const dem::Scene> bareScene,
+                    const std::vector<stand::StandCatalogue>& catalogues, const RunnerSettings& settings) {
+    const MpiWorld& world = MpiWorld::current();
+    JobRunner runner(plan, bareScene, catalogues);
+    std::mutex turn;  // one thread at a time talks to the coordinator (MPI_THREAD_SERIALIZED)
+    const Exchange remote = [&](std::optional<JobOutcome> finished) -> std::optional<CampaignJob> {
+        std::lock_guard<std::mutex> lock(turn);
+        world.send(0, kRequest, finished ? encode(*finished) : std::string());
+        const MpiWorld::Message reply = world.receive(0);
+        if (reply.tag != kJob) return std::nullopt;
+        return decodeJob(reply.bytes);
     };
-    int threads = settings.threads > 0 ? settings.threads : static_cast<int>(std::thread::hardware_concurrency());
-    threads = std::max(1, std::min(threads, total));
-    std::vector<std::thread> pool;
-    for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
-    for (auto& t : pool) t.join();
-    if (failure) std::rethrow_exception(failure);
+    runThreads(threadCount(settings.threads, std::numeric_limits<int>::max()), runner, remote);
+    world.send(0, kDone, {});
 }
 
 }  // namespace sylva::assess

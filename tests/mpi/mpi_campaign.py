@@ -1,0 +1,126 @@
+#!/usr/bin/env python3
+"""An assess campaign spread over MPI ranks gives, bit for bit, the one-process campaign's results.
+
+  mpi_campaign.py same   SYLVAROCK MPIRUN   3 ranks x 2 threads against 1 process x 1 thread
+  mpi_campaign.py resume SYLVAROCK MPIRUN   a 3-rank job whose rank 1 is killed mid-campaign, resumed
+                                            on 2 ranks, against 1 process
+
+Compared: results.json byte for byte, the forests' statistics byte for byte, and each run log as a
+set of lines (a log is appended in the order runs finish, which depends on the ranks; each line
+carries its run index, seed, values to 17 digits and checksum). The short test slope (tests/assess/
+data/short-scene.ini) keeps each run to milliseconds; its forests are still generated and summarised
+on the ranks that run them.
+"""
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+PROJECT = os.path.dirname(os.path.dirname(HERE))
+mode, exe, mpirun = sys.argv[1], sys.argv[2], sys.argv[3]
+
+
+def design(runs, baseline):
+    return ["assess", "--stand", os.path.join(PROJECT, "data/stands/GR1"), "--stand",
+            os.path.join(PROJECT, "data/stands/PY1"), "--scene", os.path.join(PROJECT, "tests/assess/data/short-scene.ini"),
+            "--runs", str(runs), "--realisations", "2", "--baseline-runs", str(baseline), "--seed", "11",
+            "--bootstrap", "300"]
+
+
+def mpi(ranks):
+    root = ["--allow-run-as-root"] if os.geteuid() == 0 else []
+    return [mpirun] + root + ["--oversubscribe", "-np", str(ranks), exe]
+
+
+def run(cmd):
+    r = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
+    if r.returncode != 0:
+        sys.exit(f"FAILED (exit {r.returncode}): {' '.join(cmd)}\n{r.stdout}\n{r.stderr}")
+    return r
+
+
+def contents(out):
+    """What the campaign keeps: results.json, forests/*, and each run log's lines as a set."""
+    found = {"results.json": open(os.path.join(out, "results.json"), "rb").read()}
+    for sub in ("forests", "runs"):
+        for name in sorted(os.listdir(os.path.join(out, sub))):
+            data = open(os.path.join(out, sub, name), "rb").read()
+            found[f"{sub}/{name}"] = sorted(data.splitlines()) if sub == "runs" else data
+    return found
+
+
+def compare(one, many):
+    a, b = contents(one), contents(many)
+    if a.keys() != b.keys():
+        sys.exit(f"FAILED: files differ: {sorted(a.keys() ^ b.keys())}")
+    differ = [k for k in a if a[k] != b[k]]
+    if differ:
+        sys.exit(f"FAILED: differ between one process and MPI: {differ}")
+    runs = sum(len(v) - 1 for k, v in a.items() if k.startswith("runs/"))
+    print(f"identical: results.json, {sum(k.startswith('forests/') for k in a)} forest summaries, {runs} runs")
+
+
+def rank_pids(job):
+    """{rank: pid} of the processes mpirun started (read from their environment)."""
+    pids = {}
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            env = open(f"/proc/{entry}/environ", "rb").read().split(b"\0")
+            stat = open(f"/proc/{entry}/stat").read()
+        except OSError:
+            continue
+        if int(stat.rsplit(")", 1)[1].split()[1]) != job.pid:
+            continue
+        for kv in env:
+            if kv.startswith(b"OMPI_COMM_WORLD_RANK="):
+                pids[int(kv.split(b"=")[1])] = int(entry)
+    return pids
+
+
+def logged(out):
+    d = os.path.join(out, "runs")
+    if not os.path.isdir(d):
+        return 0
+    return sum(max(0, open(os.path.join(d, f), "rb").read().count(b"\n") - 1) for f in os.listdir(d))
+
+
+tmp = tempfile.mkdtemp(prefix="sylvarock-mpi-")
+try:
+    one, many = os.path.join(tmp, "one"), os.path.join(tmp, "many")
+    if mode == "same":
+        args = design(runs=6, baseline=60)
+        run([exe] + args + ["--threads", "1", "--out", one])
+        run(mpi(3) + args + ["--threads", "2", "--out", many])
+        compare(one, many)
+    elif mode == "resume":
+        args = design(runs=40, baseline=2000)
+        run([exe] + args + ["--threads", "1", "--out", one])
+        total = 2000 + 2 * 2 * 2 * 40
+        job = subprocess.Popen(mpi(3) + args + ["--threads", "1", "--out", many], stdout=subprocess.DEVNULL,
+                               stderr=subprocess.PIPE, text=True)
+        deadline = time.time() + 300
+        while logged(many) < total // 5 and job.poll() is None and time.time() < deadline:
+            time.sleep(0.05)
+        pids = rank_pids(job)
+        if job.poll() is not None or 1 not in pids:
+            sys.exit(f"FAILED: the job ended (or rank 1 was not found) before it could be killed: {job.poll()} {pids}")
+        os.kill(pids[1], signal.SIGKILL)  # a rank dies: mpirun ends the others
+        job.wait(timeout=120)
+        cut = logged(many)
+        print(f"rank 1 killed with {cut} of {total} runs stored; mpirun exit {job.returncode}")
+        if job.returncode == 0 or cut >= total:
+            sys.exit("FAILED: the kill did not interrupt the campaign")
+        r = run(mpi(2) + args + ["--threads", "1", "--out", many, "--resume"])
+        note = [l for l in r.stderr.splitlines() if "resuming" in l]
+        print(note[0] if note else "(no resume note)")
+        compare(one, many)
+    else:
+        sys.exit(f"unknown mode {mode}")
+finally:
+    shutil.rmtree(tmp, ignore_errors=True)

@@ -1,17 +1,15 @@
 #include "libassess/CampaignRunner.hpp"
 
-#include <algorithm>
-#include <chrono>
 #include <filesystem>
 #include <functional>
 #include <limits>
 #include <mutex>
 #include <optional>
-#include <thread>
 
 #include "CampaignDispatcher.hpp"
 #include "CampaignJob.hpp"
 #include "JobRunner.hpp"
+#include "RankExchange.hpp"
 #include "libassess/ForestSummary.hpp"
 #include "libassess/MpiWorld.hpp"
 #include "libstand/ForestGenerator.hpp"
@@ -23,29 +21,7 @@ namespace {
 
 constexpr double kUnforestedRunM = 30;  // Sect. 2.3.2: the blocks reach ~15 m/s before the forest
 
-// Tags of the runners' messages. A worker's request carries the outcome of its last job (empty on its
-// first request); the coordinator answers each with a job or with kStop; a worker whose threads have
-// all stopped says kDone.
-enum Tag : int { kRequest = 1, kJob = 2, kStop = 3, kDone = 4 };
-
 using Exchange = std::function<std::optional<CampaignJob>(std::optional<JobOutcome> finished)>;
-
-// `threads` threads, each running jobs until `exchange` has none left, handing in each outcome as it
-// asks for the next job.
-void runThreads(int threads, JobRunner& runner, const Exchange& exchange) {
-    auto work = [&] {
-        std::optional<JobOutcome> finished;
-        while (const std::optional<CampaignJob> job = exchange(std::move(finished))) finished = runner.run(*job);
-    };
-    std::vector<std::thread> pool;
-    for (int t = 0; t < threads; ++t) pool.emplace_back(work);
-    for (auto& t : pool) t.join();
-}
-
-int threadCount(int requested, int jobs) {
-    const int threads = requested > 0 ? requested : static_cast<int>(std::thread::hardware_concurrency());
-    return std::max(1, std::min(threads, jobs));
-}
 
 }  // namespace
 
@@ -74,52 +50,32 @@ void runMissing(const std::vector<Campaign>& plan, CampaignStore& store, std::sh
     }
     CampaignDispatcher dispatcher(plan, store, settings);
     JobRunner runner(plan, bareScene, catalogues);
-    const MpiWorld& world = MpiWorld::current();
-    const int localThreads = threadCount(settings.threads, dispatcher.runsToDo());
-    const Exchange local = [&](std::optional<JobOutcome> finished) { return dispatcher.exchange(0, std::move(finished)); };
-    if (world.size() == 1) {
-        if (dispatcher.runsToDo() > 0) runThreads(localThreads, runner, local);
-    } else {
-        // This rank's threads run jobs too; the main thread answers the other ranks.
-        std::thread own([&] { runThreads(localThreads, runner, local); });
-        try {
-            for (int done = 0; done < world.size() - 1;) {
-                std::optional<MpiWorld::Message> m = world.poll();
-                if (!m) {
-                    std::this_thread::sleep_for(std::chrono::microseconds(200));
-                } else if (m->tag == kDone) {
-                    ++done;
-                } else {
-                    std::optional<JobOutcome> finished;
-                    if (!m->bytes.empty()) finished = decodeOutcome(m->bytes);
-                    const std::optional<CampaignJob> job = dispatcher.exchange(m->source, std::move(finished));
-                    world.send(m->source, job ? kJob : kStop, job ? encode(*job) : std::string());
-                }
-            }
-        } catch (const std::exception&) {
-            // MPI itself failed: this rank's threads stop after their runs, and its exit makes mpirun
-            // end the others.
-            dispatcher.fail(std::current_exception());
-        }
-        own.join();
-    }
+    const int threads = threadsFor(settings.threads, dispatcher.runsToDo());
+    const std::function<JobOutcome(const CampaignJob&)> run = [&](const CampaignJob& job) { return runner.run(job); };
+    const Exchange own = [&](std::optional<JobOutcome> finished) { return dispatcher.exchange(0, std::move(finished)); };
+    const AnswerRank answer = [&](int rank, std::optional<std::string> finished) -> std::optional<std::string> {
+        const std::optional<CampaignJob> job =
+            dispatcher.exchange(rank, finished ? std::optional<JobOutcome>(decodeOutcome(*finished)) : std::nullopt);
+        if (!job) return std::nullopt;
+        return encode(*job);
+    };
+    coordinateRanks(MpiWorld::current(), [&] { workOnThreads(threads, own, run); }, answer,
+                    [&](std::exception_ptr e) { dispatcher.fail(e); });
     dispatcher.rethrowFailure();
 }
 
 void serveCampaigns(const std::vector<Campaign>& plan, std::shared_ptr<const dem::Scene> bareScene,
                     const std::vector<stand::StandCatalogue>& catalogues, const RunnerSettings& settings) {
-    const MpiWorld& world = MpiWorld::current();
     JobRunner runner(plan, bareScene, catalogues);
-    std::mutex turn;  // one thread at a time talks to the coordinator (MPI_THREAD_SERIALIZED)
+    CoordinatorLink link(MpiWorld::current());
     const Exchange remote = [&](std::optional<JobOutcome> finished) -> std::optional<CampaignJob> {
-        std::lock_guard<std::mutex> lock(turn);
-        world.send(0, kRequest, finished ? encode(*finished) : std::string());
-        const MpiWorld::Message reply = world.receive(0);
-        if (reply.tag != kJob) return std::nullopt;
-        return decodeJob(reply.bytes);
+        const std::optional<std::string> job = link.exchange(finished ? std::optional<std::string>(encode(*finished)) : std::nullopt);
+        if (!job) return std::nullopt;
+        return decodeJob(*job);
     };
-    runThreads(threadCount(settings.threads, std::numeric_limits<int>::max()), runner, remote);
-    world.send(0, kDone, {});
+    const std::function<JobOutcome(const CampaignJob&)> run = [&](const CampaignJob& job) { return runner.run(job); };
+    workOnThreads(threadsFor(settings.threads, std::numeric_limits<int>::max()), remote, run);
+    link.done();
 }
 
 }  // namespace sylva::assess

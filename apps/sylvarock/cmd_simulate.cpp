@@ -2,14 +2,19 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
+#include <optional>
 #include <sstream>
 
 #include "Cli.hpp"
 #include "ProgressBar.hpp"
 #include "Gnuplot.hpp"
+#include "libassess/MpiWorld.hpp"
+#include "libassess/RankedCampaign.hpp"
 #include "libdem/Campaign.hpp"
 #include "libdem/CampaignSummary.hpp"
 #include "libstand/InputError.hpp"
@@ -44,7 +49,16 @@ void drawFigures(const std::string& dir, const dem::Scene& scene, const std::vec
 }
 
 
-int runSimulate(int argc, const char* const* argv) {
+// What simulate runs, read from its options (every MPI rank reads the same).
+struct Simulation {
+    std::string sceneFile, out;
+    bool figures = true;
+    std::unique_ptr<const dem::Scene> scene;
+    dem::CampaignOptions campaign;
+};
+
+// The simulation, or nothing when help was asked for. Only rank 0 creates the output folder.
+std::optional<Simulation> readSimulation(int argc, const char* const* argv) {
     po::options_description o("simulate");
     std::vector<std::string> sets;
     o.add_options()
@@ -65,11 +79,12 @@ int runSimulate(int argc, const char* const* argv) {
                "  sylvarock simulate --scene data/scenes/no-forest.ini --runs 100 --seed 1 --out out/no-forest\n"
                "  sylvarock simulate --scene data/scenes/no-forest.ini --runs 4 --trajectory --block sphere --out out/t\n"
                "  sylvarock simulate --scene data/scenes/no-forest.ini --set soil.friction_deg=35 --out out/phi35\n"
-               "  sylvarock simulate --scene data/scenes/no-forest.ini --model lumped --runs 60000 --out out/lumped\n"))
-        return 0;
+               "  sylvarock simulate --scene data/scenes/no-forest.ini --model lumped --runs 60000 --out out/lumped\n"
+               "  mpirun -np 8 sylvarock simulate ... --threads 1   (8 MPI ranks, same results; docs/cluster.md)\n"))
+        return std::nullopt;
     if (vm["help-scene"].as<bool>()) {
         std::cout << dem::describeSceneKeys() << "\n";
-        return 0;
+        return std::nullopt;
     }
     if (!vm.count("scene")) throw InputError("--scene is required (e.g. data/scenes/no-forest.ini)");
     if (!vm.count("out")) throw InputError("--out DIR is required");
@@ -79,36 +94,60 @@ int runSimulate(int argc, const char* const* argv) {
     const int runs = vm.count("runs") ? vm["runs"].as<int>() : -1;
     if (vm.count("runs") && runs < 1) throw InputError("--runs must be at least 1");
 
-    const std::string out = vm["out"].as<std::string>();
-    std::filesystem::create_directories(out);
-    const auto t0 = std::chrono::steady_clock::now();
-    const dem::Scene scene(dem::loadScene(vm["scene"].as<std::string>(), sets));
-    std::cerr << "scene: " << scene.soil().size() << " soil spheres over x [" << scene.soil().xmin() << ", "
-              << scene.soil().xmax() << "] m; block " << dem::toString(scene.config().block.shape) << " of "
-              << scene.blockTemplate().mass() << " kg";
-    if (scene.forested()) std::cerr << "; forest of " << scene.forest().trees.size() << " stems";
-    std::cerr << "\n";
-
-    dem::CampaignOptions c;
-    c.runs = runs > 0 ? runs : (scene.config().launch.enabled ? 1 : 100);
+    Simulation sim;
+    sim.sceneFile = vm["scene"].as<std::string>();
+    sim.out = vm["out"].as<std::string>();
+    sim.figures = !vm["no-figures"].as<bool>();
+    if (assess::MpiWorld::current().coordinator()) std::filesystem::create_directories(sim.out);
+    sim.scene = std::make_unique<const dem::Scene>(dem::loadScene(sim.sceneFile, sets));
+    dem::CampaignOptions& c = sim.campaign;
+    c.runs = runs > 0 ? runs : (sim.scene->config().launch.enabled ? 1 : 100);
     c.model = model;
-    if (c.model == dem::Model::Lumped && scene.config().launch.enabled)
+    if (c.model == dem::Model::Lumped && sim.scene->config().launch.enabled)
         throw InputError("--model lumped follows blocks down a slope; a single-tree launch (block.speed_m_s) needs the DEM");
     c.seed = vm["seed"].as<Seed>().value;
     c.threads = threadCount(vm);
     c.run.recordTrajectory = vm["trajectory"].as<bool>();
+    return sim;
+}
+
+int runSimulate(int argc, const char* const* argv) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const assess::MpiWorld& world = assess::MpiWorld::current();
+    std::optional<Simulation> read;
+    std::exception_ptr failure;
+    try {
+        read = readSimulation(argc, argv);
+    } catch (...) {
+        failure = std::current_exception();
+    }
+    world.agree(failure);  // under mpirun, a bad option is reported once, by rank 0
+    if (!read) return 0;
+    const dem::Scene& scene = *read->scene;
+    dem::CampaignOptions& c = read->campaign;
+    const std::string& out = read->out;
+    if (!world.coordinator()) {
+        assess::runCampaignOnRanks(scene, c);
+        return 0;
+    }
+    std::cerr << "scene: " << scene.soil().size() << " soil spheres over x [" << scene.soil().xmin() << ", "
+              << scene.soil().xmax() << "] m; block " << dem::toString(scene.config().block.shape) << " of "
+              << scene.blockTemplate().mass() << " kg";
+    if (scene.forested()) std::cerr << "; forest of " << scene.forest().trees.size() << " stems";
+    if (world.size() > 1) std::cerr << "; runs spread over " << world.size() << " MPI ranks";
+    std::cerr << "\n";
     ProgressBar bar(stderrIsTerminal());
     c.onRunDone = [&bar](const dem::RunResult&, int done, int total) { bar.update(done, total); };
-    const auto results = dem::runCampaign(scene, c);
+    const auto results = assess::runCampaignOnRanks(scene, c);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
     const auto s = dem::summarise(results);
     dem::writeRunsCsv(out + "/runs.csv", results);
-    dem::writeSummaryJson(out + "/summary.json", s, wall, vm["scene"].as<std::string>());
+    dem::writeSummaryJson(out + "/summary.json", s, wall, read->sceneFile);
     if (scene.forested()) dem::writeImpactsCsv(out + "/impacts.csv", results);
     if (scene.config().launch.enabled) dem::writeImpactEnergyJson(out + "/energy.json", results.front());
     if (c.run.recordTrajectory) dem::writeTrajectories(out + "/trajectories", results);
-    if (!vm["no-figures"].as<bool>()) drawFigures(out, scene, results);
+    if (read->figures) drawFigures(out, scene, results);
 
     std::printf("%d %s runs in %.1f s wall (median %.3f s CPU per run)\n", s.runs, dem::toString(c.model).c_str(), wall, s.cpu50);
     if (s.failedRuns < s.runs) {
@@ -144,7 +183,7 @@ int runSimulate(int argc, const char* const* argv) {
     return 0;
 }
 
-const CommandRegistration reg{{"simulate", "run blocks down a slope (Monte Carlo, in parallel)", &runSimulate}};
+const CommandRegistration reg{{"simulate", "run blocks down a slope (Monte Carlo, in parallel)", &runSimulate, true}};
 
 }  // namespace
 }  // namespace sylva::cli

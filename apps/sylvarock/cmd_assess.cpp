@@ -2,7 +2,6 @@
 // bootstrap intervals, rankings and correlations (paper Sect. 2.3.3, 3.3; libassess).
 #include <chrono>
 #include <cstdio>
-#include <exception>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -71,14 +70,8 @@ std::optional<assess::AssessmentOptions> readOptions(int argc, const char* const
 
 int runAssess(int argc, const char* const* argv) {
     const assess::MpiWorld& world = assess::MpiWorld::current();
-    std::optional<assess::AssessmentOptions> read;
-    std::exception_ptr failure;
-    try {
-        read = readOptions(argc, argv);
-    } catch (...) {
-        failure = std::current_exception();
-    }
-    world.agree(failure);  // under mpirun, a bad option is reported once, by rank 0
+    // Under mpirun, a bad option is reported once, by rank 0.
+    std::optional<assess::AssessmentOptions> read = world.agreeOn([&] { return readOptions(argc, argv); });
     if (!read) return 0;
     assess::AssessmentOptions& a = *read;
     if (!world.coordinator()) {

@@ -2,7 +2,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -114,14 +113,8 @@ std::optional<Simulation> readSimulation(int argc, const char* const* argv) {
 int runSimulate(int argc, const char* const* argv) {
     const auto t0 = std::chrono::steady_clock::now();
     const assess::MpiWorld& world = assess::MpiWorld::current();
-    std::optional<Simulation> read;
-    std::exception_ptr failure;
-    try {
-        read = readSimulation(argc, argv);
-    } catch (...) {
-        failure = std::current_exception();
-    }
-    world.agree(failure);  // under mpirun, a bad option is reported once, by rank 0
+    // Under mpirun, a bad option is reported once, by rank 0.
+    std::optional<Simulation> read = world.agreeOn([&] { return readSimulation(argc, argv); });
     if (!read) return 0;
     const dem::Scene& scene = *read->scene;
     dem::CampaignOptions& c = read->campaign;

@@ -57,15 +57,10 @@ AssessmentResults runAssessment(const AssessmentOptions& options) {
         if (options.onNote) options.onNote(text);
     };
     Inputs in;
-    std::unique_ptr<CampaignStore> opened;
-    std::exception_ptr failure;
-    try {
+    const std::unique_ptr<CampaignStore> opened = MpiWorld::current().agreeOn([&] {
         in = readInputs(options, note);
-        opened = std::make_unique<CampaignStore>(options.outDir, options.design, in.plan, options.resume);
-    } catch (...) {
-        failure = std::current_exception();
-    }
-    MpiWorld::current().agree(failure);
+        return std::make_unique<CampaignStore>(options.outDir, options.design, in.plan, options.resume);
+    });
     CampaignStore& store = *opened;
     const std::vector<Campaign>& plan = in.plan;
     for (const auto& n : store.notes()) note(n);
@@ -102,14 +97,7 @@ AssessmentResults runAssessment(const AssessmentOptions& options) {
 }
 
 void serveAssessment(const AssessmentOptions& options) {
-    Inputs in;
-    std::exception_ptr failure;
-    try {
-        in = readInputs(options, [](const std::string&) {});
-    } catch (...) {
-        failure = std::current_exception();
-    }
-    MpiWorld::current().agree(failure);
+    const Inputs in = MpiWorld::current().agreeOn([&] { return readInputs(options, [](const std::string&) {}); });
     RunnerSettings runner;
     runner.threads = options.threads;
     serveCampaigns(in.plan, in.bareScene, in.catalogues, runner);

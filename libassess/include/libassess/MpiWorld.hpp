@@ -51,6 +51,20 @@ public:
     // 0 rethrows its own error, or one naming the ranks that failed; another rank rethrows its own
     // error if rank 0 was ready, and throws PeerFailed if not (rank 0 has said why).
     void agree(std::exception_ptr mine) const;
+    // `read()` on this rank (reading options or inputs), then agree() on how it went: its value, or
+    // the exception agree() throws.
+    template <class Read>
+    auto agreeOn(Read&& read) const -> decltype(read()) {
+        decltype(read()) value{};
+        std::exception_ptr failure;
+        try {
+            value = read();
+        } catch (...) {
+            failure = std::current_exception();
+        }
+        agree(failure);
+        return value;
+    }
 
 private:
     MpiWorld() = default;  // one rank, MPI not started

@@ -7,10 +7,13 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "libassess/Assessment.hpp"
+#include "libassess/CampaignPlan.hpp"
+#include "libassess/CampaignStore.hpp"
 #include "libassess/ForestSummary.hpp"
 #include "libassess/Report.hpp"
 #include "libstand/InputError.hpp"
@@ -123,6 +126,24 @@ TEST_F(AssessResume, NonEmptyOutputWithoutResumeIsRefused) {
     resume.resume = true;  // and it is no campaign to resume either
     EXPECT_THROW(runAssessment(resume), sylva::InputError);
     EXPECT_EQ(slurp(root_ / "busy/notes.txt"), "someone's file\n");
+}
+
+// Issue 16: a second writer on a campaign folder (a resume started while the job still runs, two MPI
+// jobs given the same --out) would mix its runs into the first one's logs; the folder's lock refuses
+// it while the first store is open, and lets it in once that store is closed.
+TEST_F(AssessResume, AFolderBeingWrittenIsRefusedToASecondWriter) {
+    const AssessmentOptions first = options("busy", 1);
+    auto open = std::make_unique<CampaignStore>(first.outDir, first.design, planCampaigns(first.design), false);
+    AssessmentOptions second = options("busy", 1);
+    second.resume = true;
+    try {
+        runAssessment(second);
+        FAIL() << "a second writer was let in";
+    } catch (const sylva::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("being written by another sylvarock assess"), std::string::npos) << e.what();
+    }
+    open.reset();
+    EXPECT_EQ(assess(second), 6 + 2 * 2 * 4);
 }
 
 // Issue 13: a forest summary edited on disk (Clark-Evans 0.5895 -> 0.5) went into results.json.

@@ -60,12 +60,16 @@ std::vector<std::vector<Vec>> convexPartition(const std::vector<Vec>& vertices) 
 
 TranslationCorrection::TranslationCorrection(const Window& window) : window_(window) {
     if (window.isRectangle()) return;
-    convexParts_ = convexPartition(window.vertices());
-    for (const auto& part : convexParts_) {
-        Eigen::AlignedBox2d box;
-        for (const Vec& p : part) box.extend(p);
-        partBoxes_.push_back(box);
-    }
+    // With holes H_k in the outer ring O, 1_W = 1_O - sum_k 1_{H_k}, so |W ∩ (W + v)| is the signed
+    // sum of the pieces' overlaps: outer pieces count +1, hole pieces -1.
+    for (std::size_t r = 0; r < window.rings().size(); ++r)
+        for (auto& part : convexPartition(window.rings()[r])) {
+            Eigen::AlignedBox2d box;
+            for (const Vec& p : part) box.extend(p);
+            partBoxes_.push_back(box);
+            partSigns_.push_back(r == 0 ? 1.0 : -1.0);
+            convexParts_.push_back(std::move(part));
+        }
 }
 
 double TranslationCorrection::setCovariance(const Eigen::Vector2d& v) const {
@@ -84,9 +88,9 @@ double TranslationCorrection::setCovariance(const Eigen::Vector2d& v) const {
             if (!partBoxes_[a].intersects(shifted)) continue;
             const auto& A = convexParts_[a];
             const auto& B = convexParts_[b];
-            overlap += A.size() <= B.size() ? convexOverlap(A, B, v) : convexOverlap(B, A, -v);
+            overlap += partSigns_[a] * partSigns_[b] * (A.size() <= B.size() ? convexOverlap(A, B, v) : convexOverlap(B, A, -v));
         }
-    return overlap;
+    return std::max(0.0, overlap);  // the signed sum can round below zero where W and W + v barely meet
 }
 
 double TranslationCorrection::weight(const Eigen::Vector2d& v) const {
@@ -115,18 +119,19 @@ double circleFractionInside(const Window& window, const Eigen::Vector2d& c, doub
     }
     // Polygon: cut the circle where it crosses the edges and keep the arcs whose midpoints are inside.
     std::vector<double> angles;
-    const auto& v = window.vertices();
-    for (std::size_t k = 0; k < v.size(); ++k) {
-        const Vec a = v[k] - c, d = v[(k + 1) % v.size()] - v[k];
-        // |a + t d| = r:  (d.d) t² + 2 (a.d) t + (a.a - r²) = 0
-        const double qa = d.squaredNorm(), qb = 2 * a.dot(d), qc = a.squaredNorm() - r * r;
-        const double disc = qb * qb - 4 * qa * qc;
-        if (disc < 0) continue;
-        for (const double t : {(-qb - std::sqrt(disc)) / (2 * qa), (-qb + std::sqrt(disc)) / (2 * qa)})
-            if (t >= 0 && t <= 1) {
-                const Vec p = a + t * d;
-                angles.push_back(std::atan2(p.y(), p.x()));
-            }
+    for (const auto& v : window.rings()) {
+        for (std::size_t k = 0; k < v.size(); ++k) {
+            const Vec a = v[k] - c, d = v[(k + 1) % v.size()] - v[k];
+            // |a + t d| = r:  (d.d) t² + 2 (a.d) t + (a.a - r²) = 0
+            const double qa = d.squaredNorm(), qb = 2 * a.dot(d), qc = a.squaredNorm() - r * r;
+            const double disc = qb * qb - 4 * qa * qc;
+            if (disc < 0) continue;
+            for (const double t : {(-qb - std::sqrt(disc)) / (2 * qa), (-qb + std::sqrt(disc)) / (2 * qa)})
+                if (t >= 0 && t <= 1) {
+                    const Vec p = a + t * d;
+                    angles.push_back(std::atan2(p.y(), p.x()));
+                }
+        }
     }
     if (angles.empty()) return window.contains(c + Vec(r, 0)) ? 1.0 : 0.0;
     std::sort(angles.begin(), angles.end());

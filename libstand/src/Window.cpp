@@ -59,7 +59,7 @@ Window Window::rectangle(double xmin, double ymin, double xmax, double ymax) {
     w.rectangle_ = true;
     w.lo_ = {xmin, ymin};
     w.hi_ = {xmax, ymax};
-    w.vertices_ = {{xmin, ymin}, {xmax, ymin}, {xmax, ymax}, {xmin, ymax}};
+    w.rings_ = {{{xmin, ymin}, {xmax, ymin}, {xmax, ymax}, {xmin, ymax}}};
     w.area_ = (xmax - xmin) * (ymax - ymin);
     w.perimeter_ = 2 * ((xmax - xmin) + (ymax - ymin));
     return w;
@@ -70,22 +70,30 @@ void Window::requirePlotSize() const {
     throw InputError("window of " + readableNumber(area_) + " m2 is outside [1, 1e10] m2 (coordinates in km, or in degrees?)");
 }
 
-Window Window::polygon(std::vector<Eigen::Vector2d> v) {
+namespace {
+
+// Tolerance of the orientation tests for vertices of this size.
+double orientationTolerance(const std::vector<Vec>& v) {
+    double scale = 0;
+    for (const auto& p : v) scale = std::max(scale, p.cwiseAbs().maxCoeff());
+    return 1e-12 * std::max(1.0, scale * scale);
+}
+
+// A ring as a simple polygon, counter-clockwise, without its closing vertex or repeated vertices.
+// Throws InputError naming `ring` ("polygon window", "hole 2 of the polygon window").
+std::vector<Vec> simpleRing(std::vector<Vec> v, const std::string& ring) {
     for (const auto& p : v)
-        if (!std::isfinite(p.x()) || !std::isfinite(p.y())) throw InputError("polygon window has a non-finite vertex");
+        if (!std::isfinite(p.x()) || !std::isfinite(p.y())) throw InputError(ring + " has a non-finite vertex");
     if (v.size() >= 2 && v.front() == v.back()) v.pop_back();
     // Repeated consecutive vertices add nothing and would make zero-length edges.
     v.erase(std::unique(v.begin(), v.end()), v.end());
     if (v.size() >= 2 && v.front() == v.back()) v.pop_back();
     if (v.size() < 3)
-        throw InputError("degenerate polygon window: " + std::to_string(v.size()) +
-                         " distinct vertices (at least 3 are needed)");
-    double scale = 0;
-    for (const auto& p : v) scale = std::max(scale, p.cwiseAbs().maxCoeff());
-    const double tol = 1e-12 * std::max(1.0, scale * scale);
+        throw InputError("degenerate " + ring + ": " + std::to_string(v.size()) + " distinct vertices (at least 3 are needed)");
+    const double tol = orientationTolerance(v);
     const std::size_t n = v.size();
     if (std::all_of(v.begin() + 2, v.end(), [&](const Vec& p) { return orientation(v[0], v[1], p, tol) == 0; }))
-        throw InputError("degenerate polygon window: its area is zero (all vertices on one line)");
+        throw InputError("degenerate " + ring + ": its area is zero (all vertices on one line)");
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = i + 1; j < n; ++j) {
             const bool adjacent = j == i + 1 || (i == 0 && j == n - 1);
@@ -95,27 +103,76 @@ Window Window::polygon(std::vector<Eigen::Vector2d> v) {
                 const Vec& p = j == i + 1 ? v[i] : v[(i + 1) % n];
                 const Vec& q = j == i + 1 ? v[(j + 1) % n] : v[n - 1];
                 if (orientation(p, shared, q, tol) == 0 && (p - shared).dot(q - shared) > 0)
-                    throw InputError("polygon window intersects itself (edges " + std::to_string(i + 1) + " and " +
+                    throw InputError(ring + " intersects itself (edges " + std::to_string(i + 1) + " and " +
                                      std::to_string(j + 1) + " overlap)");
                 continue;
             }
             if (segmentsIntersect(v[i], v[(i + 1) % n], v[j], v[(j + 1) % n], tol))
-                throw InputError("polygon window intersects itself (edges " + std::to_string(i + 1) + " and " +
+                throw InputError(ring + " intersects itself (edges " + std::to_string(i + 1) + " and " +
                                  std::to_string(j + 1) + " cross)");
         }
     const double a = signedArea(v);
-    if (std::abs(a) <= tol) throw InputError("degenerate polygon window: its area is zero");
+    if (std::abs(a) <= tol) throw InputError("degenerate " + ring + ": its area is zero");
     if (a < 0) std::reverse(v.begin(), v.end());
+    return v;
+}
+
+// Even-odd test of a ring; `onBoundary` tells whether p lies on one of its edges.
+bool insideRing(const std::vector<Vec>& ring, const Vec& p, bool& onBoundary) {
+    bool inside = false;
+    onBoundary = false;
+    for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+        const Vec& a = ring[i];
+        const Vec& b = ring[j];
+        if (segmentDistance(p, a, b) == 0.0) {
+            onBoundary = true;
+            return true;
+        }
+        if ((a.y() > p.y()) != (b.y() > p.y()) && p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
+            inside = !inside;
+    }
+    return inside;
+}
+
+bool ringsTouch(const std::vector<Vec>& r, const std::vector<Vec>& s, double tol) {
+    for (std::size_t i = 0; i < r.size(); ++i)
+        for (std::size_t j = 0; j < s.size(); ++j)
+            if (segmentsIntersect(r[i], r[(i + 1) % r.size()], s[j], s[(j + 1) % s.size()], tol)) return true;
+    return false;
+}
+
+}  // namespace
+
+Window Window::polygon(std::vector<Eigen::Vector2d> outer, std::vector<std::vector<Eigen::Vector2d>> holes) {
     Window w;
     w.rectangle_ = false;
-    w.vertices_ = std::move(v);
-    w.area_ = std::abs(a);
-    w.lo_ = w.hi_ = w.vertices_.front();
-    for (std::size_t i = 0; i < n; ++i) {
-        w.lo_ = w.lo_.cwiseMin(w.vertices_[i]);
-        w.hi_ = w.hi_.cwiseMax(w.vertices_[i]);
-        w.perimeter_ += (w.vertices_[(i + 1) % n] - w.vertices_[i]).norm();
+    w.rings_.push_back(simpleRing(std::move(outer), "polygon window"));
+    for (std::size_t h = 0; h < holes.size(); ++h)
+        w.rings_.push_back(simpleRing(std::move(holes[h]), "hole " + std::to_string(h + 1) + " of the polygon window"));
+    std::vector<Vec> all;
+    for (const auto& r : w.rings_) all.insert(all.end(), r.begin(), r.end());
+    const double tol = orientationTolerance(all);
+    // A hole lies strictly inside the outer ring and apart from the other holes (a hole touching the
+    // boundary would split or pinch the window; spatstat refuses such polygons too).
+    for (std::size_t h = 1; h < w.rings_.size(); ++h) {
+        const std::string hole = "hole " + std::to_string(h) + " of the polygon window";
+        bool edge = false;
+        if (ringsTouch(w.rings_[h], w.rings_[0], tol) || !insideRing(w.rings_[0], w.rings_[h][0], edge) || edge)
+            throw InputError(hole + " is not strictly inside its outer ring");
+        for (std::size_t k = 1; k < h; ++k)
+            if (ringsTouch(w.rings_[h], w.rings_[k], tol) || insideRing(w.rings_[k], w.rings_[h][0], edge) ||
+                insideRing(w.rings_[h], w.rings_[k][0], edge))
+                throw InputError(hole + " overlaps or touches hole " + std::to_string(k));
     }
+    w.area_ = signedArea(w.rings_[0]);
+    for (std::size_t h = 1; h < w.rings_.size(); ++h) w.area_ -= signedArea(w.rings_[h]);
+    w.lo_ = w.hi_ = w.rings_[0].front();
+    for (const auto& ring : w.rings_)
+        for (std::size_t i = 0; i < ring.size(); ++i) {
+            w.lo_ = w.lo_.cwiseMin(ring[i]);
+            w.hi_ = w.hi_.cwiseMax(ring[i]);
+            w.perimeter_ += (ring[(i + 1) % ring.size()] - ring[i]).norm();
+        }
     return w;
 }
 
@@ -123,39 +180,51 @@ Window Window::fromWkt(const std::string& wkt) {
     std::string s;
     for (char c : wkt) s += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     const auto bad = [&](const std::string& why) {
-        return InputError("bad WKT polygon '" + wkt + "': " + why + " (expected POLYGON((x y, x y, ...)))");
+        return InputError("bad WKT polygon '" + wkt + "': " + why +
+                          " (expected POLYGON((x y, x y, ...)) or, with holes, POLYGON((outer ring), (hole), ...))");
     };
     const auto start = s.find_first_not_of(" \t");
     if (start == std::string::npos || s.compare(start, 7, "POLYGON") != 0) throw bad("it does not start with POLYGON");
     const auto open = s.find('(', start + 7);
     if (open == std::string::npos || s.find_first_not_of(" \t", start + 7) != open) throw bad("no '(' after POLYGON");
-    const auto open2 = s.find_first_not_of(" \t", open + 1);
-    if (open2 == std::string::npos || s[open2] != '(') throw bad("the ring must be in double parentheses");
-    const auto close = s.find(')', open2 + 1);
-    if (close == std::string::npos) throw bad("missing ')'");
-    const auto after = s.find_first_not_of(" \t\r\n", close + 1);
-    if (after == std::string::npos) throw bad("missing the final ')'");
-    if (s[after] == ',') throw bad("polygons with holes are not supported as windows");
-    if (s[after] != ')' || s.find_first_not_of(" \t\r\n", after + 1) != std::string::npos)
-        throw bad("trailing text after the ring");
-    std::vector<Vec> v;
-    std::stringstream ring(wkt.substr(open2 + 1, close - open2 - 1));
-    std::string pair;
-    while (std::getline(ring, pair, ',')) {
-        const char* p = pair.c_str();
-        char* end = nullptr;
-        errno = 0;
-        const double x = std::strtod(p, &end);
-        if (end == p) throw bad("'" + pair + "' is not an 'x y' pair");
-        const char* q = end;
-        const double y = std::strtod(q, &end);
-        if (end == q || errno == ERANGE) throw bad("'" + pair + "' is not an 'x y' pair");
-        while (*end == ' ' || *end == '\t') ++end;
-        if (*end != '\0') throw bad("'" + pair + "' is not an 'x y' pair");
-        v.emplace_back(x, y);
+    std::vector<std::vector<Vec>> rings;
+    std::size_t at = open + 1;
+    for (;;) {
+        const auto ringOpen = s.find_first_not_of(" \t\r\n", at);
+        if (ringOpen == std::string::npos || s[ringOpen] != '(') throw bad("each ring must be in its own parentheses");
+        const auto close = s.find(')', ringOpen + 1);
+        if (close == std::string::npos) throw bad("missing ')'");
+        std::vector<Vec> v;
+        std::stringstream ring(wkt.substr(ringOpen + 1, close - ringOpen - 1));
+        std::string pair;
+        while (std::getline(ring, pair, ',')) {
+            const char* p = pair.c_str();
+            char* end = nullptr;
+            errno = 0;
+            const double x = std::strtod(p, &end);
+            if (end == p) throw bad("'" + pair + "' is not an 'x y' pair");
+            const char* q = end;
+            const double y = std::strtod(q, &end);
+            if (end == q || errno == ERANGE) throw bad("'" + pair + "' is not an 'x y' pair");
+            while (*end == ' ' || *end == '\t') ++end;
+            if (*end != '\0') throw bad("'" + pair + "' is not an 'x y' pair");
+            v.emplace_back(x, y);
+        }
+        rings.push_back(std::move(v));
+        const auto after = s.find_first_not_of(" \t\r\n", close + 1);
+        if (after == std::string::npos) throw bad("missing the final ')'");
+        if (s[after] == ',') {
+            at = after + 1;
+            continue;
+        }
+        if (s[after] != ')' || s.find_first_not_of(" \t\r\n", after + 1) != std::string::npos)
+            throw bad("trailing text after the rings");
+        break;
     }
     try {
-        return polygon(std::move(v));
+        std::vector<Vec> outer = std::move(rings.front());
+        rings.erase(rings.begin());
+        return polygon(std::move(outer), std::move(rings));
     } catch (const InputError& e) {
         throw bad(e.what());
     }
@@ -164,31 +233,30 @@ Window Window::fromWkt(const std::string& wkt) {
 bool Window::contains(const Eigen::Vector2d& p) const {
     if (rectangle_) return lo_.x() <= p.x() && p.x() <= hi_.x() && lo_.y() <= p.y() && p.y() <= hi_.y();
     if ((p.array() < lo_.array()).any() || (p.array() > hi_.array()).any()) return false;
-    const std::size_t n = vertices_.size();
-    bool inside = false;
-    for (std::size_t i = 0, j = n - 1; i < n; j = i++) {
-        const Vec& a = vertices_[i];
-        const Vec& b = vertices_[j];
-        if (segmentDistance(p, a, b) == 0.0) return true;  // on the boundary: closed window
-        if ((a.y() > p.y()) != (b.y() > p.y()) && p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
-            inside = !inside;
-    }
-    return inside;
+    bool edge = false;
+    if (!insideRing(rings_[0], p, edge)) return false;
+    // Closed window: a hole's boundary belongs to the window.
+    for (std::size_t h = 1; h < rings_.size(); ++h)
+        if (insideRing(rings_[h], p, edge) && !edge) return false;
+    return true;
 }
 
 double Window::distanceToBoundary(const Eigen::Vector2d& p) const {
     if (rectangle_)
         return std::min({p.x() - lo_.x(), hi_.x() - p.x(), p.y() - lo_.y(), hi_.y() - p.y()});
     double d = INFINITY;
-    const std::size_t n = vertices_.size();
-    for (std::size_t i = 0; i < n; ++i) d = std::min(d, segmentDistance(p, vertices_[i], vertices_[(i + 1) % n]));
+    for (const auto& ring : rings_)
+        for (std::size_t i = 0; i < ring.size(); ++i) d = std::min(d, segmentDistance(p, ring[i], ring[(i + 1) % ring.size()]));
     return d;
 }
 
 std::string Window::describe() const {
     if (rectangle_)
         return "rectangle [" + readableNumber(lo_.x()) + "," + readableNumber(hi_.x()) + "]x[" + readableNumber(lo_.y()) + "," + readableNumber(hi_.y()) + "]";
-    return "polygon of " + std::to_string(vertices_.size()) + " vertices";
+    std::string text = "polygon of " + std::to_string(rings_[0].size()) + " vertices";
+    if (rings_.size() == 2) text += " with 1 hole";
+    if (rings_.size() > 2) text += " with " + std::to_string(rings_.size() - 1) + " holes";
+    return text;
 }
 
 }  // namespace sylva::stand

@@ -71,6 +71,14 @@ TEST(InventoryReader, ReadsWktPlots) {
     EXPECT_DOUBLE_EQ(inv.areaHa(), (400 + 60 + 24) / 1e4);  // square + L of 10x6 and 6x4
 }
 
+// Issue 13: a plot that leaves out a rock or a gap (spatstat's gordon-like windows) was refused.
+TEST(InventoryReader, ReadsPlotsWithHoles) {
+    const Inventory inv = readInventory(data("stems_ok.csv"), data("plots_with_hole.csv"));
+    EXPECT_DOUBLE_EQ(inv.areaHa(), (400 - 16 + 60 + 24) / 1e4);  // the 4 m x 4 m hole left out
+    EXPECT_EQ(inv.plots[0].window.describe(), "polygon of 4 vertices with 1 hole");
+}
+TEST(InventoryReader, StemInAPlotsHole) { expectBadStems("stems_in_hole.csv", 3, "lies outside its plot '1'", "plots_with_hole.csv"); }
+
 TEST(InventoryReader, StandIsNamedAfterTheStemsFile) {
     const Inventory inv = readInventory(std::string(SYLVAROCK_DATA) + "/stands/GR1_stems.csv",
                                         std::string(SYLVAROCK_DATA) + "/stands/GR1_plots.csv");

@@ -99,6 +99,19 @@ TEST(StatsCli, PointsInRectangleAndPolygon) {
     EXPECT_TRUE(std::isnan(jsonNumber(nodbh.out, "basal_area_m2_ha")));
 }
 
+// Issue 13: spatstat's gordon, whose window has two holes, was refused.
+TEST(StatsCli, PointsInAWindowWithHoles) {
+    std::string wkt = slurp(td::spatstatDir() + "gordon_window.txt");
+    wkt = wkt.substr(wkt.find("POLYGON"));
+    wkt.erase(wkt.find_last_not_of("\n") + 1);
+    const CliRun r = stats("--points " + td::spatstatDir() + "gordon_points.csv --window-wkt '" + wkt + "' --json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    // The holes are out of the area (2 163.8 m2, not the outer ring's 2 244.6) and the boundary
+    // (spatstat's clarkevans() guard index on the same window: test_window_holes.cpp).
+    EXPECT_NEAR(jsonNumber(r.out, "stems_per_ha"), 99 / 0.21637679027576, 1e-6);
+    EXPECT_NEAR(jsonNumber(r.out, "guard"), 0.641794224593362, 1e-9);
+}
+
 TEST(StatsCli, PcfFileAgreesWithSpatstat) {
     const std::string csv = ::testing::TempDir() + "/stats_cli_pcf.csv";
     const CliRun r = stats("--points " + td::spatstatDir() + "spruces_points.csv --window 0,0,56,38 --pcf-rmax 9.5 "

@@ -81,14 +81,15 @@ TEST(Window, WktPolygon) {
 }
 
 TEST(Window, BadWktIsAnInputErrorNamingTheProblem) {
+    // A hole with a vertex on the outer ring (the triangle's diagonal y = x).
     EXPECT_NE(errorOf([] { Window::fromWkt("POLYGON((0 0, 1 0, 1 1, 0 0), (0.2 0.2, 0.4 0.2, 0.3 0.3, 0.2 0.2))"); })
-                  .find("holes"),
+                  .find("hole 1 of the polygon window is not strictly inside"),
               std::string::npos);
     EXPECT_NE(errorOf([] { Window::fromWkt("LINESTRING(0 0, 1 1)"); }).find("POLYGON"), std::string::npos);
     EXPECT_NE(errorOf([] { Window::fromWkt("POLYGON((0 0, 1 x, 1 1, 0 0))"); }).find("'x y' pair"), std::string::npos);
     EXPECT_NE(errorOf([] { Window::fromWkt("POLYGON((0 0, 1 0, 1 1, 0 0)"); }).find("missing"), std::string::npos);
     EXPECT_NE(errorOf([] { Window::fromWkt("POLYGON((0 0, 1 0, 1 1, 0 0)) x"); }).find("trailing"), std::string::npos);
-    EXPECT_NE(errorOf([] { Window::fromWkt("POLYGON(0 0, 1 0, 1 1, 0 0)"); }).find("double parentheses"),
+    EXPECT_NE(errorOf([] { Window::fromWkt("POLYGON(0 0, 1 0, 1 1, 0 0)"); }).find("own parentheses"),
               std::string::npos);
     EXPECT_NE(errorOf([] { Window::fromWkt("POLYGON((0 0, 1 1, 2 2, 0 0))"); }).find("area is zero"), std::string::npos);
 }

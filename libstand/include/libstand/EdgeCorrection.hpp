@@ -20,8 +20,9 @@ public:
 
 private:
     Window window_;
-    std::vector<std::vector<Eigen::Vector2d>> convexParts_;  // convex partition of a polygonal window
+    std::vector<std::vector<Eigen::Vector2d>> convexParts_;  // convex partitions of the window's rings
     std::vector<Eigen::AlignedBox2d> partBoxes_;             // their bounding boxes
+    std::vector<double> partSigns_;                          // +1 for the outer ring's, -1 for a hole's
 };
 
 // Fraction of the circle of radius r about c (c inside W) whose circumference lies inside W.

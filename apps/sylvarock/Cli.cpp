@@ -10,6 +10,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "libdem/OptionErrorMessage.hpp"
 #include "libstand/InputError.hpp"
 
 namespace sylva::cli {
@@ -45,7 +46,7 @@ bool parse(int argc, const char* const* argv, const po::options_description& opt
         try {
             po::store(po::parse_config_file(in, options), vm);
         } catch (const po::error& e) {
-            throw InputError(path, 0, e.what());
+            throw InputError(path, 0, optionErrorMessage(e));
         }
     }
     po::notify(vm);

@@ -5,6 +5,7 @@
 
 #include "Cli.hpp"
 #include "libassess/MpiWorld.hpp"
+#include "libdem/OptionErrorMessage.hpp"
 #include "libstand/InputError.hpp"
 
 namespace {
@@ -44,7 +45,8 @@ int main(int argc, char** argv) {
             std::cerr << "sylvarock " << c.name << ": error: " << e.what() << "\n";
             return 2;
         } catch (const boost::program_options::error& e) {
-            std::cerr << "sylvarock " << c.name << ": " << e.what() << " (see sylvarock " << c.name << " --help)\n";
+            std::cerr << "sylvarock " << c.name << ": " << sylva::optionErrorMessage(e) << " (see sylvarock " << c.name
+                      << " --help)\n";
             return 2;
         } catch (const std::exception& e) {
             std::cerr << "sylvarock " << c.name << ": error: " << e.what() << "\n";

@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "libdem/OptionErrorMessage.hpp"
 #include "libdem/StemParameterSet.hpp"
 #include "libstand/InputError.hpp"
 
@@ -308,7 +309,7 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
         for (const auto& o : given.options) fromSet.insert(o.string_key);
         po::store(given, vm);  // first stored wins: --set over the file
     } catch (const po::error& e) {
-        throw InputError(std::string("--set: ") + e.what());
+        throw InputError(std::string("--set: ") + optionErrorMessage(e));
     }
     if (path) {
         std::ifstream in(*path);
@@ -316,7 +317,7 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
         try {
             po::store(po::parse_config_file(in, d), vm);
         } catch (const po::error& e) {
-            throw InputError(*path, 0, e.what());
+            throw InputError(*path, 0, optionErrorMessage(e));
         }
         c.sourceFile = *path;
     }

@@ -102,6 +102,14 @@ TEST(SimulateCli, NegativeSeedsAndThreadCountsAreRefused) {
     EXPECT_EQ(cli(base + "--seed 18446744073709551615 --threads 1 --out " + out.string()), 0);
 }
 
+// Boost's option errors loop forever on a value or option holding one of their placeholders
+// ('%value%', '%canonical_option%'): the command hung instead of refusing it (tests/fuzz found it).
+TEST(SimulateCli, OptionsHoldingBoostPlaceholdersAreRefused) {
+    const std::string out = (std::filesystem::temp_directory_path() / "sylvarock-tests" / "simulate-percent").string();
+    EXPECT_EQ(WEXITSTATUS(cli("simulate --runs '%value%' --out " + out)), 2);
+    EXPECT_EQ(WEXITSTATUS(cli("simulate '--%canonical_option%' 1 --out " + out)), 2);
+}
+
 // A run that goes numerically wrong is kept as failed, with its message, and left out of the
 // statistics; the other runs of the campaign still run. Forcing a step 20 times the soil contacts'
 // limit makes every run fail at its first landing.

@@ -59,6 +59,19 @@ TEST(SceneConfigParser, BadInputNamesTheFileAndTheKey) {
     EXPECT_THROW(loadScene("/nonexistent/scene.ini"), sylva::InputError);
 }
 
+// Found by tests/fuzz/fuzz_scene: Boost's message for a key holding '%canonical_option%' never came
+// back (its placeholder substitution loops); the message now comes, with the key as typed.
+TEST(SceneConfigParser, PercentInAKeyGivesItsMessageInsteadOfHanging) {
+    const std::string path = writeScene("percent.ini", "[terrain]\nprofi%canonical_option%le = x.csv\n");
+    try {
+        loadScene(path);
+        FAIL() << "an unknown key was accepted";
+    } catch (const sylva::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("terrain.profi(%)canonical_option(%)le"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(sceneFromOverrides({"soil.bogus%value%=1"}), sylva::InputError);
+}
+
 // The stem's damping law is chosen by name; the calibrated set's is the default, the paper's in toe2018.
 TEST(SceneConfigParser, StemDampingIsNamed) {
     EXPECT_EQ(sceneFromOverrides({}).stem.bending.damping, StemDamping::ConstantLoss);

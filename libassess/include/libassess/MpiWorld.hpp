@@ -69,7 +69,7 @@ public:
 private:
     MpiWorld() = default;  // one rank, MPI not started
     int rank_ = 0, size_ = 1;
-    bool started_ = false;
+    [[maybe_unused]] bool started_ = false;  // MPI_Init was called (read only in an MPI build)
 };
 
 }  // namespace sylva::assess

@@ -22,7 +22,8 @@ declare -A seeds=(
   [fuzz_scene]="tests/fuzz/corpus/scene"
   [fuzz_profile]="tests/data/dem"
   [fuzz_dtm]="tests/data/dem"
-  [fuzz_run_log]="tests/fuzz/corpus/run_log"
+  [fuzz_run_record]="tests/fuzz/corpus/run_record"
+  [fuzz_campaign_store]="tests/fuzz/corpus/store"
 )
 targets=("$@")
 [ ${#targets[@]} -eq 0 ] && targets=("${!seeds[@]}")

@@ -66,7 +66,7 @@ AssessmentResults runAssessment(const AssessmentOptions& options) {
     for (const auto& n : store.notes()) note(n);
     int stored = 0, total = 0;
     for (std::size_t c = 0; c < plan.size(); ++c) {
-        stored += static_cast<int>(store.log(c).records().size());
+        stored += static_cast<int>(store.runs(c).size());
         total += plan[c].runs;
     }
     note((store.resumed() ? "resuming: " : "new campaign: ") + std::to_string(stored) + " of " + std::to_string(total) +

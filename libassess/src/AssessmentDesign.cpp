@@ -70,10 +70,8 @@ std::string designText(const AssessmentDesign& d) {
     return out.str();
 }
 
-void requireSameDesign(const std::string& designFile, const AssessmentDesign& design) {
-    std::ifstream stored(designFile);
-    if (!stored) throw InputError(designFile, 0, "cannot read the design of the campaign to resume");
-    std::istringstream wanted(designText(design));
+void requireSameDesign(const std::string& storedText, const std::string& where, const AssessmentDesign& design) {
+    std::istringstream stored(storedText), wanted(designText(design));
     const auto have = significantLines(stored), want = significantLines(wanted);
     const std::string advice = "; resume with the options of that campaign, or start a new one with another --out";
     for (std::size_t i = 0; i < std::max(have.size(), want.size()); ++i) {
@@ -81,7 +79,7 @@ void requireSameDesign(const std::string& designFile, const AssessmentDesign& de
         const long line = i < have.size() ? have[i].first : (have.empty() ? 0 : have.back().first);
         const std::string was = i < have.size() ? "'" + have[i].second + "'" : "nothing";
         const std::string now = i < want.size() ? "'" + want[i].second + "'" : "nothing";
-        throw InputError(designFile, line, "the campaign there was started with " + was + ", this one asks for " + now + advice);
+        throw InputError(where + ", design line " + std::to_string(line) + ": the campaign there was started with " + was + ", this one asks for " + now + advice);
     }
 }
 

@@ -13,7 +13,7 @@ CampaignDispatcher::CampaignDispatcher(const std::vector<Campaign>& plan, Campai
     : plan_(plan), store_(store), settings_(settings), left_(plan.size()), teamsOn_(plan.size(), 0),
       summaryAsked_(plan.size(), false) {
     for (std::size_t c = 0; c < plan.size(); ++c) {
-        left_[c] = store.log(c).missingRuns();
+        left_[c] = store.missingRuns(c);
         std::reverse(left_[c].begin(), left_[c].end());
         total_ += static_cast<int>(left_[c].size());
     }
@@ -44,9 +44,8 @@ void CampaignDispatcher::store(JobOutcome&& o) {
     if (!o.error.empty()) return failed(o.error, o.inputError);
     const std::optional<RunRecord> record = parseRunLine(o.record);
     if (!record || record->run != o.job.run) return failed("run " + std::to_string(o.job.run) + " came back garbled", false);
-    if (o.forest) writeForestSummary(store_.forestSummaryPath(campaign), *o.forest);
     if (!o.failure.empty() && settings_.onRunFailed) settings_.onRunFailed(campaign.id, *record, o.failure);
-    store_.log(o.job.campaign).append(*record);
+    store_.save(o.job.campaign, *record, o.forest ? &*o.forest : nullptr);
     ++done_;
     if (settings_.onRunDone) settings_.onRunDone(campaign.id, done_, total_);
 }

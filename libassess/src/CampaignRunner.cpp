@@ -1,6 +1,5 @@
 #include "libassess/CampaignRunner.hpp"
 
-#include <filesystem>
 #include <functional>
 #include <limits>
 #include <mutex>
@@ -38,15 +37,11 @@ stand::Window forestExtent(const dem::Scene& bareScene) {
 void runMissing(const std::vector<Campaign>& plan, CampaignStore& store, std::shared_ptr<const dem::Scene> bareScene,
                 const std::vector<stand::StandCatalogue>& catalogues, const RunnerSettings& settings) {
     for (std::size_t c = 0; c < plan.size(); ++c) {
-        if (!plan[c].forested || !store.log(c).missingRuns().empty() || forestSummaryIntact(store.forestSummaryPath(plan[c])))
-            continue;
-        // All runs are stored but the forest's statistics were lost, damaged or edited: only they are
+        if (!plan[c].forested || !store.missingRuns(c).empty() || store.forest(c)) continue;
+        // All runs are stored but the forest's statistics were damaged or edited: only they are
         // computed again (the forest is its seed's).
-        if (std::filesystem::exists(store.forestSummaryPath(plan[c])))
-            store.note(store.forestSummaryPath(plan[c]) + ": checksum mismatch (edited or damaged): computed again");
         const stand::Window extent = forestExtent(*bareScene);
-        writeForestSummary(store.forestSummaryPath(plan[c]),
-                           summariseForest(campaignForest(plan[c], catalogues.at(plan[c].stand), extent), extent));
+        store.saveForest(c, summariseForest(campaignForest(plan[c], catalogues.at(plan[c].stand), extent), extent));
     }
     CampaignDispatcher dispatcher(plan, store, settings);
     JobRunner runner(plan, bareScene, catalogues);

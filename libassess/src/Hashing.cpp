@@ -1,5 +1,6 @@
 #include "libassess/Hashing.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
@@ -33,6 +34,13 @@ std::uint32_t derivedSeed(std::uint64_t seed, const std::string& label) {
 std::string toHex(std::uint64_t value, int digits) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%0*llx", digits, static_cast<unsigned long long>(value));
+    return buf;
+}
+
+std::string exactText(double v) {
+    if (std::isnan(v)) return "nan";
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
     return buf;
 }
 

@@ -15,7 +15,7 @@ namespace {
 // `failed` instead (they are stored, so a resumed campaign does not run them again).
 std::vector<RunRecord> completeRuns(const CampaignStore& store, std::size_t c, const Campaign& campaign,
                                     std::vector<std::string>& failed) {
-    const auto& records = store.log(c).records();
+    const auto& records = store.runs(c);
     if (static_cast<int>(records.size()) != campaign.runs)
         throw std::logic_error("campaign " + campaign.id + " is not complete: " + std::to_string(records.size()) + " of " +
                                std::to_string(campaign.runs) + " runs");
@@ -78,7 +78,8 @@ AssessmentResults analyse(const AssessmentDesign& design, const std::vector<Camp
             row.inventory = inventories.at(campaign.stand);
             out.stands.push_back(std::move(row));
         }
-        out.stands.back().forests.push_back(readForestSummary(store.forestSummaryPath(campaign)));
+        if (!store.forest(c)) throw std::logic_error("campaign " + campaign.id + " is complete but its forest's statistics are missing");
+        out.stands.back().forests.push_back(*store.forest(c));
         out.stands.back().runs.push_back(std::move(runs));
     }
     baseline = runouts(out.baseline);

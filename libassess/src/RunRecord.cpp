@@ -1,6 +1,7 @@
 #include "libassess/RunRecord.hpp"
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -13,12 +14,6 @@ namespace sylva::assess {
 namespace {
 
 constexpr int kChecksumDigits = 16;
-
-std::string number(double v) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
 
 std::vector<std::string> split(const std::string& line) {
     std::vector<std::string> cells;
@@ -69,18 +64,17 @@ RunRecord toRecord(const dem::RunResult& result) {
     return r;
 }
 
-std::string runLogHeader() {
-    return "run,seed,runout_m,runout_horizontal_m,stop_x_m,stop_y_m,stop_z_m,energy_line_deg,max_speed_m_s,"
-           "tree_impacts,reason,check";
+namespace {
+std::string lineBody(const RunRecord& r) {
+    return std::to_string(r.run) + ',' + std::to_string(r.seed) + ',' + exactText(r.runoutM) + ',' + exactText(r.runoutHorizontalM) +
+           ',' + exactText(r.stopX) + ',' + exactText(r.stopY) + ',' + exactText(r.stopZ) + ',' + exactText(r.energyLineDeg) + ',' +
+           exactText(r.maxSpeed) + ',' + std::to_string(r.treeImpacts) + ',' + r.reason + ',';
 }
+}  // namespace
 
-std::string formatRunLine(const RunRecord& r) {
-    const std::string body = std::to_string(r.run) + ',' + std::to_string(r.seed) + ',' + number(r.runoutM) + ',' +
-                             number(r.runoutHorizontalM) + ',' + number(r.stopX) + ',' + number(r.stopY) + ',' +
-                             number(r.stopZ) + ',' + number(r.energyLineDeg) + ',' + number(r.maxSpeed) + ',' +
-                             std::to_string(r.treeImpacts) + ',' + r.reason + ',';
-    return body + toHex(fnv1a64(body), kChecksumDigits);
-}
+std::string runChecksum(const RunRecord& r) { return toHex(fnv1a64(lineBody(r)), kChecksumDigits); }
+
+std::string formatRunLine(const RunRecord& r) { return lineBody(r) + runChecksum(r); }
 
 std::optional<RunRecord> parseRunLine(const std::string& line) {
     const auto lastComma = line.rfind(',');

@@ -14,8 +14,8 @@
 #include "libassess/Assessment.hpp"
 #include "libassess/CampaignPlan.hpp"
 #include "libassess/CampaignStore.hpp"
-#include "libassess/ForestSummary.hpp"
 #include "libassess/Report.hpp"
+#include "StoreEdit.hpp"
 #include "libstand/InputError.hpp"
 
 namespace fs = std::filesystem;
@@ -29,13 +29,6 @@ std::string slurp(const fs::path& p) {
 }
 
 void spit(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary | std::ios::trunc) << text; }
-
-// Drops the last `lines` complete lines of a file.
-void dropLastLines(const fs::path& p, int lines) {
-    std::string t = slurp(p);
-    for (int i = 0; i < lines; ++i) t.erase(t.rfind('\n', t.size() - 2) + 1);
-    spit(p, t);
-}
 
 class AssessResume : public ::testing::Test {
 protected:
@@ -73,12 +66,11 @@ TEST_F(AssessResume, InterruptedCampaignResumesToIdenticalResults) {
     EXPECT_EQ(assess(options("whole", 1)), 6 + 2 * 2 * 4);
     EXPECT_EQ(assess(options("cut", 2)), 6 + 2 * 2 * 4);
     const fs::path cut = root_ / "cut";
-    // What kills leave: a line cut in the middle, runs never written, a realisation never started.
-    const std::string a1 = slurp(cut / "runs/GR1_A_001.csv");
-    spit(cut / "runs/GR1_A_001.csv", a1.substr(0, a1.size() - 30));
-    dropLastLines(cut / "runs/baseline.csv", 2);
-    fs::remove(cut / "runs/GR1_NA_002.csv");
-    fs::remove(cut / "forests/GR1_NA_002.csv");
+    // What kills leave: runs never stored, a realisation never started (its forest with it).
+    editStore((cut / CampaignStore::kFileName).string(),
+              "DELETE FROM runs WHERE campaign = 'GR1_A_001' AND run = 3;"
+              "DELETE FROM runs WHERE campaign = 'baseline' AND run >= 4;"
+              "DELETE FROM runs WHERE campaign = 'GR1_NA_002'; DELETE FROM forests WHERE campaign = 'GR1_NA_002'");
     fs::remove(cut / "results.json");
 
     AssessmentOptions resume = options("cut", 2);
@@ -86,7 +78,6 @@ TEST_F(AssessResume, InterruptedCampaignResumesToIdenticalResults) {
     EXPECT_EQ(assess(resume), 1 + 2 + 4);  // only the missing runs are simulated
     // Byte for byte, whatever the threads (1 then 2) and the interruptions.
     EXPECT_EQ(slurp(cut / "results.json"), slurp(root_ / "whole/results.json"));
-    EXPECT_EQ(slurp(cut / "forests/GR1_NA_002.csv"), slurp(root_ / "whole/forests/GR1_NA_002.csv"));
 
     // Resuming a finished campaign simulates nothing and changes nothing.
     EXPECT_EQ(assess(resume), 0);
@@ -103,7 +94,7 @@ TEST_F(AssessResume, MismatchedDesignIsRefused) {
         FAIL() << "a resume with other runs was accepted";
     } catch (const sylva::InputError& e) {
         const std::string what = e.what();
-        EXPECT_NE(what.find("design.txt:4"), std::string::npos) << what;
+        EXPECT_NE(what.find("campaign.sqlite, design line 4"), std::string::npos) << what;
         EXPECT_NE(what.find("runs_per_realisation = 4"), std::string::npos) << what;
         EXPECT_NE(what.find("runs_per_realisation = 5"), std::string::npos) << what;
     }
@@ -120,7 +111,7 @@ TEST_F(AssessResume, NonEmptyOutputWithoutResumeIsRefused) {
         runAssessment(options("busy", 1));
         FAIL() << "a non-empty --out was accepted";
     } catch (const sylva::InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("use --resume"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("busy is not empty"), std::string::npos) << e.what();
     }
     AssessmentOptions resume = options("busy", 1);
     resume.resume = true;  // and it is no campaign to resume either
@@ -152,37 +143,15 @@ TEST_F(AssessResume, AFolderBeingWrittenIsRefusedToASecondWriter) {
 TEST_F(AssessResume, AnEditedForestSummaryIsComputedAgain) {
     assess(options("whole", 2));
     assess(options("edited", 2));
-    const fs::path summary = root_ / "edited/forests/GR1_A_001.csv";
-    std::string text = slurp(summary);
-    const auto lastComma = text.rfind(',', text.rfind(',') - 1);  // before clark_evans
-    text = text.substr(0, lastComma) + ",0.5" + text.substr(text.rfind(','));
-    spit(summary, text);
-    EXPECT_FALSE(forestSummaryIntact(summary.string()));
-    EXPECT_THROW(readForestSummary(summary.string()), sylva::InputError);
+    editStore((root_ / "edited" / CampaignStore::kFileName).string(),
+              "UPDATE forests SET clark_evans = 0.5 WHERE campaign = 'GR1_A_001'");
     AssessmentOptions resume = options("edited", 2);
     resume.resume = true;
     std::vector<std::string> notes;
     resume.onNote = [&notes](const std::string& n) { notes.push_back(n); };
     EXPECT_EQ(assess(resume), 0);
     EXPECT_EQ(slurp(root_ / "edited/results.json"), slurp(root_ / "whole/results.json"));
-    EXPECT_EQ(slurp(summary), slurp(root_ / "whole/forests/GR1_A_001.csv"));
-    EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const std::string& n) { return n.find("checksum mismatch") != std::string::npos; }));
-}
-
-// Issue 13: a kill while the design was being written left design.txt.tmp alone, which neither a
-// new campaign nor --resume accepted. Nothing else is written before the design: it starts afresh.
-TEST_F(AssessResume, AKillBeforeTheDesignWasWrittenStartsAfresh) {
-    assess(options("whole", 2));
-    for (const bool resume : {false, true}) {
-        const fs::path dir = root_ / (resume ? "killed-resume" : "killed-new");
-        fs::create_directories(dir);
-        spit(dir / "design.txt.tmp", "stands = GR1\nru");
-        AssessmentOptions o = options(dir.filename().string(), 2);
-        o.resume = resume;
-        EXPECT_EQ(assess(o), 6 + 2 * 2 * 4) << (resume ? "--resume" : "new");
-        EXPECT_EQ(slurp(dir / "results.json"), slurp(root_ / "whole/results.json"));
-        EXPECT_FALSE(fs::exists(dir / "design.txt.tmp"));
-    }
+    EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const std::string& n) { return n.find("fail their checksum") != std::string::npos; }));
 }
 
 }  // namespace

@@ -11,9 +11,9 @@
 For simulate, every file the command writes is compared, without the columns and keys that time the
 run (cpu_s, wall and CPU seconds), which no two runs share.
 
-Compared: results.json byte for byte, the forests' statistics byte for byte, and each run log as a
-set of lines (a log is appended in the order runs finish, which depends on the ranks; each line
-carries its run index, seed, values to 17 digits and checksum). The short test slope (tests/assess/
+Compared: results.json byte for byte, and each table of the campaign store (design, campaigns,
+forests, runs) as a set of rows (runs are stored in the order they finish, which depends on the
+ranks; each row carries its run index, seed, values and checksum). The short test slope (tests/assess/
 data/short-scene.ini) keeps each run to milliseconds; its forests are still generated and summarised
 on the ranks that run them.
 """
@@ -21,6 +21,7 @@ import json
 import os
 import shutil
 import signal
+import sqlite3
 import subprocess
 import sys
 import tempfile
@@ -54,24 +55,20 @@ def run(cmd):
 
 
 def contents(out):
-    """What the campaign keeps: results.json, forests/*, and each run log's lines as a set."""
+    """What the campaign keeps: results.json and the store's tables (runs, forests, design, campaigns)."""
     found = {"results.json": open(os.path.join(out, "results.json"), "rb").read()}
-    for sub in ("forests", "runs"):
-        for name in sorted(os.listdir(os.path.join(out, sub))):
-            data = open(os.path.join(out, sub, name), "rb").read()
-            found[f"{sub}/{name}"] = sorted(data.splitlines()) if sub == "runs" else data
+    with sqlite3.connect(os.path.join(out, "campaign.sqlite")) as db:
+        for table in ("design", "campaigns", "forests", "runs"):
+            found[table] = sorted(db.execute(f"SELECT * FROM {table}").fetchall(), key=repr)
     return found
 
 
 def compare(one, many):
     a, b = contents(one), contents(many)
-    if a.keys() != b.keys():
-        sys.exit(f"FAILED: files differ: {sorted(a.keys() ^ b.keys())}")
     differ = [k for k in a if a[k] != b[k]]
     if differ:
         sys.exit(f"FAILED: differ between one process and MPI: {differ}")
-    runs = sum(len(v) - 1 for k, v in a.items() if k.startswith("runs/"))
-    print(f"identical: results.json, {sum(k.startswith('forests/') for k in a)} forest summaries, {runs} runs")
+    print(f"identical: results.json, {len(a['forests'])} forest summaries, {len(a['runs'])} runs")
 
 
 def timeless(path):
@@ -124,10 +121,15 @@ def rank_pids(job):
 
 
 def logged(out):
-    d = os.path.join(out, "runs")
-    if not os.path.isdir(d):
+    """Runs stored so far, read beside the writer (SQLite's WAL lets a reader in while it writes)."""
+    path = os.path.join(out, "campaign.sqlite")
+    if not os.path.exists(path):
         return 0
-    return sum(max(0, open(os.path.join(d, f), "rb").read().count(b"\n") - 1) for f in os.listdir(d))
+    try:
+        with sqlite3.connect(f"file:{path}?mode=ro", uri=True, timeout=5) as db:
+            return db.execute("SELECT count(*) FROM runs").fetchone()[0]
+    except sqlite3.Error:  # the store is still being created
+        return 0
 
 
 tmp = tempfile.mkdtemp(prefix="sylvarock-mpi-")

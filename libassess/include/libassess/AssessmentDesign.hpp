@@ -36,8 +36,8 @@ void validate(const AssessmentDesign& design);
 // Paths are written as comments: moving the data does not change the design, editing it does.
 std::string designText(const AssessmentDesign& design);
 
-// Throws InputError naming `designFile`, the line and both values at the first line where the
-// design stored there differs from `design`'s (comments are ignored).
-void requireSameDesign(const std::string& designFile, const AssessmentDesign& design);
+// Throws InputError naming `where` (the campaign store), the line and both values at the first line
+// where the stored design text differs from `design`'s (comments are ignored).
+void requireSameDesign(const std::string& storedText, const std::string& where, const AssessmentDesign& design);
 
 }  // namespace sylva::assess

@@ -23,11 +23,8 @@ ForestSummary summariseInventory(const stand::StandStatistics& statistics, bool 
 // A virtual forest's over the extent it was generated on (one window).
 ForestSummary summariseForest(const stand::Forest& forest, const stand::Window& extent);
 
-// One summary per small CSV file (header and one row with its checksum), written beside and renamed
-// into place so a kill never leaves half a file. read throws InputError (file, line) on a damaged or
-// edited file; intact tells whether the file exists with the row the campaign wrote.
-void writeForestSummary(const std::string& path, const ForestSummary& summary);
-ForestSummary readForestSummary(const std::string& path);
-bool forestSummaryIntact(const std::string& path);
+// FNV-1a of the summary's values written at 17 significant digits: the campaign store keeps it beside
+// the row, so statistics edited or damaged on disk are told from those the campaign computed.
+std::string forestChecksum(const ForestSummary& summary);
 
 }  // namespace sylva::assess

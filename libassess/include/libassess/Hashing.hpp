@@ -17,6 +17,10 @@ std::uint64_t fileFingerprint(const std::string& path);
 // campaign seed and a label such as "forest|GR1|A|3": different labels give unrelated seeds.
 std::uint32_t derivedSeed(std::uint64_t seed, const std::string& label);
 
+// A double as the text its checksum is taken over: 17 significant digits, which read back to the same
+// double; every NaN is "nan" (the sign of a NaN is not kept by the store, nor meaningful).
+std::string exactText(double value);
+
 // Lower-case hexadecimal, zero-padded to `digits`.
 std::string toHex(std::uint64_t value, int digits);
 

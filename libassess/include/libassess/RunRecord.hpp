@@ -1,6 +1,7 @@
 #pragma once
-// One finished block run as an assessment stores it: one line of a run log, ending with a checksum
-// of the line so that a line cut short by a kill (or damaged on disk) is recognised and redone.
+// One finished block run as an assessment keeps it: a row of the campaign store's runs table, and the
+// line of text an MPI rank sends it as. Both carry a checksum of the values, so a row edited or
+// damaged on disk, or a line garbled on its way, is recognised and the run redone.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -22,10 +23,10 @@ struct RunRecord {
 
 RunRecord toRecord(const dem::RunResult& result);
 
-// The run log's header row (CSV column names, the last one being the checksum).
-std::string runLogHeader();
-// The record as one CSV line without its newline. Numbers are written with 17 significant digits,
-// so they read back to the same doubles: a resumed campaign computes from the very same values.
+// FNV-1a of the record's values written at 17 significant digits (16 hexadecimal digits).
+std::string runChecksum(const RunRecord& record);
+// The record as one CSV line without its newline, ending with its checksum. Numbers are written
+// with 17 significant digits, so they read back to the same doubles.
 std::string formatRunLine(const RunRecord& record);
 // The record of a line, or nothing if the line is malformed or its checksum does not match.
 std::optional<RunRecord> parseRunLine(const std::string& line);

@@ -1,0 +1,1 @@
+DELETE FROM design WHERE line = 3; UPDATE campaigns SET runs = 99999999999;

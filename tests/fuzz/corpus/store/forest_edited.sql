@@ -1,0 +1,1 @@
+UPDATE forests SET stems = -5, clark_evans = NULL; PRAGMA user_version = 0;

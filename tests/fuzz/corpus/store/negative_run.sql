@@ -1,0 +1,1 @@
+UPDATE runs SET run = -1; UPDATE runs SET seed = NULL WHERE campaign = 'baseline';

@@ -1,0 +1,1 @@
+INSERT INTO runs (campaign, run, seed, reason, checksum) VALUES ('GR1_A_001', 2, 5, 'rest', 'x');

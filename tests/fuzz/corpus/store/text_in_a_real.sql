@@ -1,0 +1,1 @@
+UPDATE runs SET runout_m = 'abc' WHERE run = 1;

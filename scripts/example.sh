@@ -9,9 +9,12 @@ mkdir -p out
 echo "== Stand GR1: inventory statistics (out/GR1-stats.json, out/GR1-figures/)"
 "$exe" stats --stems data/stands/GR1_stems.csv --plots data/stands/GR1_plots.csv --plot-dir out/GR1-figures
 "$exe" stats --stems data/stands/GR1_stems.csv --plots data/stands/GR1_plots.csv --json > out/GR1-stats.json
-echo "== A virtual aggregated forest over the forested part of the slope (out/GR1-A.csv)"
+echo "== Virtual forests over the forested part of the slope, aggregated (out/GR1-A.csv) and not (out/GR1-NA.csv),"
+echo "   their g(r) against the inventory's (out/GR1-A-figures/, out/GR1-NA-figures/)"
 "$exe" generate --stems data/stands/GR1_stems.csv --plots data/stands/GR1_plots.csv --structure aggregated \
-  --extent 130,0,630,200 --seed 1 --out out/GR1-A.csv
+  --extent 130,0,630,200 --seed 1 --out out/GR1-A.csv --plot-dir out/GR1-A-figures
+"$exe" generate --stems data/stands/GR1_stems.csv --plots data/stands/GR1_plots.csv --structure random \
+  --extent 130,0,630,200 --seed 1 --out out/GR1-NA.csv --plot-dir out/GR1-NA-figures
 echo "== 100 blocks down the stand-in slope without forest (out/no-forest/)"
 "$exe" simulate --scene data/scenes/no-forest.ini --runs 100 --seed 1 --out out/no-forest
 echo "== PF50 of stands GR1 and PY1, aggregated (A) and random (NA): a small campaign, ~2.5 min on 2 cores (out/assess/)"

@@ -2,12 +2,18 @@
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "Cli.hpp"
+#include "Gnuplot.hpp"
+#include "PcfFigure.hpp"
 #include "libstand/ForestGenerator.hpp"
 #include "libstand/InputError.hpp"
 #include "libstand/Inventory.hpp"
+#include "libstand/PairCorrelation.hpp"
+#include "libstand/PairCorrelationEnvelope.hpp"
 
 namespace sylva::cli {
 namespace {
@@ -39,6 +45,35 @@ stand::Window parseExtent(const std::string& text) {
     return stand::Window::rectangle(v[0], v[1], v[2], v[3]);
 }
 
+// The virtual forests' g(r) against the inventory's and its CSR envelope, and a map of the first
+// forest: does the generator keep the stand's aggregation (A) or remove it (NA)?
+void drawForestFigures(const std::string& dir, const stand::Inventory& inventory, const stand::Window& extent,
+                       const std::vector<stand::Forest>& forests, const std::string& structure) {
+    requirePlotDir(dir);
+    const std::vector<stand::PlotPoints> plots = stand::plotPoints(inventory);
+    const double rmax = stand::defaultPairCorrelationRmax(plots);
+    const std::size_t nr = 257;
+    const stand::PairCorrelation g = stand::pooledPairCorrelation(plots, rmax, nr);
+    const stand::PairCorrelationEnvelope envelope = stand::csrEnvelope(plots, rmax, nr, 39, 1);
+    std::vector<NamedPairCorrelation> curves;
+    for (std::size_t k = 0; k < forests.size() && k < 4; ++k) {
+        stand::PlotPoints whole{extent, {}};
+        for (const auto& t : forests[k].trees) whole.points.emplace_back(t.x, t.y);
+        curves.push_back({"virtual forest " + structure + " " + std::to_string(k + 1), stand::pooledPairCorrelation({whole}, rmax, nr)});
+    }
+    drawPcfFigure(dir, "pcf_vs_inventory", "g(r): virtual forests (" + structure + ") against the inventory " + inventory.name, g,
+                  &envelope, curves);
+    std::ostringstream gp;
+    gp << "set terminal svg size 1000,460 dynamic noenhanced\nset output '" << dir << "/forest_map.svg'\n"
+       << "set title 'Virtual forest " << structure << " 1 from " << inventory.name << ": " << forests.front().trees.size()
+       << " stems (dot size ~ DBH)'\nset xlabel 'x (m)'\nset ylabel 'y (m)'\nset size ratio -1\n"
+       << "set xrange [" << extent.lower().x() << ":" << extent.upper().x() << "]\nset yrange [" << extent.lower().y() << ":"
+       << extent.upper().y() << "]\n$stems << EOD\n";
+    for (const auto& t : forests.front().trees) gp << t.x << " " << t.y << " " << t.dbhCm / 40.0 << "\n";  // symbol size ~ DBH
+    gp << "EOD\nplot $stems using 1:2:3 with points pt 7 ps variable lc rgb '#2e7d32' notitle\nunset output\n";
+    plotWithGnuplot(gp.str(), "forest_map.svg in " + dir);
+}
+
 int runGenerate(int argc, const char* const* argv) {
     po::options_description options("sylvarock generate");
     options.add_options()
@@ -50,10 +85,13 @@ int runGenerate(int argc, const char* const* argv) {
         ("seed", po::value<Seed>()->default_value(Seed{}, "1"), "seed of the random generator (GSL mt19937), >= 0")
         ("realisations", po::value<long>()->default_value(1), "number of forests K; realisation k uses seed + k - 1")
         ("out", po::value<std::string>()->required(),
-         "output CSV; with K > 1 F.csv becomes F_001.csv ... F_K.csv, or put {k} in the name (F_{k}.csv)");
+         "output CSV; with K > 1 F.csv becomes F_001.csv ... F_K.csv, or put {k} in the name (F_{k}.csv)")
+        ("plot-dir", po::value<std::string>(),
+         "draw there the forests' g(r) against the inventory's with its CSR envelope (pcf_vs_inventory.svg, .csv) and a "
+         "map of the first forest (forest_map.svg); needs gnuplot");
     po::variables_map vm;
     if (!parse(argc, argv, options, vm, "sylvarock generate --stems S.csv --plots P.csv --structure aggregated|random "
-                                        "--extent xmin,ymin,xmax,ymax [--seed N] [--realisations K] --out F.csv",
+                                        "--extent xmin,ymin,xmax,ymax [--seed N] [--realisations K] --out F.csv [--plot-dir DIR]",
                "  sylvarock generate --stems data/stands/GR1_stems.csv --plots data/stands/GR1_plots.csv \\\n"
                "      --structure aggregated --extent 0,0,500,200 --seed 7 --out GR1_A.csv\n"
                "  sylvarock generate ... --structure random --realisations 10 --out forests/GR1_NA_{k}.csv"))
@@ -70,6 +108,7 @@ int runGenerate(int argc, const char* const* argv) {
     const stand::Inventory inventory = stand::readInventory(stemsPath, vm["plots"].as<std::string>());
     for (const auto& w : inventory.warnings) std::cerr << "sylvarock generate: warning: " << w << "\n";
     const stand::StandCatalogue catalogue(inventory, stemsPath);
+    std::vector<stand::Forest> drawn;  // kept for the figures
 
     for (long k = 1; k <= count; ++k) {
         settings.seed = seed + static_cast<unsigned long>(k - 1);
@@ -79,7 +118,11 @@ int runGenerate(int argc, const char* const* argv) {
         stand::writeForestCsv(path, g.forest);
         std::cout << path << ": " << g.forest.trees.size() << " stems (" << g.stemsInStools << " in " << g.stools
                   << " stools), " << toString(settings.structure) << ", seed " << settings.seed << "\n";
+        if (vm.count("plot-dir") && drawn.size() < 4) drawn.push_back(g.forest);
     }
+    if (vm.count("plot-dir"))
+        drawForestFigures(vm["plot-dir"].as<std::string>(), inventory, extent, drawn,
+                          settings.structure == stand::ForestStructure::Aggregated ? "A" : "NA");
     return 0;
 }
 

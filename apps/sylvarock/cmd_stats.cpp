@@ -14,9 +14,11 @@
 
 #include "Cli.hpp"
 #include "Gnuplot.hpp"
+#include "PcfFigure.hpp"
 #include "libstand/InputError.hpp"
 #include "libstand/Inventory.hpp"
 #include "libstand/PairCorrelation.hpp"
+#include "libstand/PairCorrelationEnvelope.hpp"
 #include "libstand/PointPattern.hpp"
 #include "libstand/StandStatistics.hpp"
 #include "libstand/StatsReport.hpp"
@@ -54,30 +56,27 @@ stand::Inventory readInput(const po::variables_map& vm) {
     return stand::readPointPattern(vm["points"].as<std::string>(), *window);
 }
 
-// g(r) of each plot on one r grid, pooled (a single pattern is its own pool).
-stand::PairCorrelation stemPairCorrelation(const stand::Inventory& inv, const po::variables_map& vm) {
-    std::map<std::string, std::vector<Eigen::Vector2d>> byPlot;
-    for (const auto& s : inv.stems) byPlot[s.plot].emplace_back(s.x, s.y);
-    double rmax = std::numeric_limits<double>::infinity();
-    if (vm.count("pcf-rmax")) {
-        rmax = vm["pcf-rmax"].as<double>();
-        if (!(rmax > 0)) throw InputError("--pcf-rmax: must be > 0");
-    } else {
-        for (const auto& p : inv.plots)
-            rmax = std::min(rmax, stand::defaultPairCorrelationRmax(p.window, byPlot[p.id].size()));
-    }
+// g(r) of each plot on one r grid, pooled (a single pattern is its own pool), and the options it
+// was computed with (the CSR envelope uses the same).
+struct StandPcf {
+    std::vector<stand::PlotPoints> plots;
+    double rmax = 0;
+    std::size_t nr = 0;
+    stand::PairCorrelationOptions options;
+    stand::PairCorrelation g;
+};
+
+StandPcf standPairCorrelation(const stand::Inventory& inv, const po::variables_map& vm) {
+    StandPcf s;
+    s.plots = stand::plotPoints(inv);
+    s.rmax = vm.count("pcf-rmax") ? vm["pcf-rmax"].as<double>() : stand::defaultPairCorrelationRmax(s.plots);
+    if (!(s.rmax > 0)) throw InputError("--pcf-rmax: must be > 0");
     const long nr = vm["pcf-nr"].as<long>();
     if (nr < 2) throw InputError("--pcf-nr: need at least 2 values of r");
-    stand::PairCorrelationOptions options;
-    if (vm.count("pcf-exact")) options.kernelSum = stand::KernelSum::Exact;
-    std::vector<stand::PairCorrelation> estimates;
-    std::vector<double> weights;
-    for (const auto& p : inv.plots) {
-        const auto& xy = byPlot[p.id];
-        estimates.push_back(stand::pairCorrelation(xy, p.window, rmax, static_cast<std::size_t>(nr), options));
-        weights.push_back(static_cast<double>(xy.size()) * (static_cast<double>(xy.size()) - 1));
-    }
-    return stand::poolPairCorrelations(estimates, weights);
+    s.nr = static_cast<std::size_t>(nr);
+    if (vm.count("pcf-exact")) s.options.kernelSum = stand::KernelSum::Exact;
+    s.g = stand::pooledPairCorrelation(s.plots, s.rmax, s.nr, s.options);
+    return s;
 }
 
 std::string csvNumber(double v) {
@@ -97,30 +96,22 @@ void writePcfCsv(const std::string& path, const stand::PairCorrelation& g) {
     if (!out) throw InputError(path, 0, "error while writing");
 }
 
-void drawFigures(const std::string& dir, const stand::Inventory& inv, const stand::PairCorrelation& g) {
-    // gnuplot, unable to open its output, would print the SVG on the terminal instead.
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec || !std::filesystem::is_directory(dir)) throw InputError(dir, 0, "cannot create the --plot-dir directory");
+void drawFigures(const std::string& dir, const stand::Inventory& inv, const StandPcf& pcf, int simulations) {
+    requirePlotDir(dir);
+    std::optional<stand::PairCorrelationEnvelope> envelope;  // seeded: the same figure every time
+    if (simulations > 0) envelope = stand::csrEnvelope(pcf.plots, pcf.rmax, pcf.nr, simulations, 1, pcf.options);
+    drawPcfFigure(dir, "pcf", "Pair correlation function, " + inv.name, pcf.g, envelope ? &*envelope : nullptr);
+    if (!inv.hasDiameters || inv.stems.empty()) return;
     std::ostringstream gp;
-    gp << "set terminal svg size 800,500 dynamic\nset grid\n$pcf << EOD\n";
-    for (std::size_t i = 1; i < g.r.size(); ++i)  // g is undefined at r = 0
-        gp << csvNumber(g.r[i]) << " " << csvNumber(g.trans[i]) << " " << csvNumber(g.iso[i]) << "\n";
-    gp << "EOD\nset output '" << dir << "/pcf.svg'\nset title 'Pair correlation function, " << inv.name
-       << "'\nset xlabel 'r (m)'\nset ylabel 'g(r)'\nset datafile missing 'NA'\n"
-          "plot $pcf using 1:2 with lines title 'translation', $pcf using 1:3 with lines title 'Ripley isotropic', "
-          "1 with lines dashtype 2 title 'Poisson'\n";
-    if (inv.hasDiameters && !inv.stems.empty()) {
-        gp << "$dbh << EOD\n";
-        for (const auto& s : inv.stems)
-            if (stand::measured(s)) gp << s.dbhCm << "\n";
-        gp << "EOD\nset output '" << dir << "/dbh_histogram.svg'\nset title 'DBH distribution, " << inv.name
-           << " (" << std::count_if(inv.stems.begin(), inv.stems.end(), stand::measured) << " measured stems)'\nset xlabel 'DBH (cm)'\nset ylabel 'stems'\nset style fill solid 0.5\n"
-              "bin(x) = 2.5 * floor(x / 2.5) + 1.25\n"
-              "plot $dbh using (bin($1)):(1) smooth frequency with boxes title '2.5 cm classes'\n";
-    }
-    gp << "unset output\n";
-    plotWithGnuplot(gp.str(), "stats figures in " + dir);
+    gp << "set terminal svg size 800,500 dynamic noenhanced\nset grid\n$dbh << EOD\n";
+    for (const auto& s : inv.stems)
+        if (stand::measured(s)) gp << s.dbhCm << "\n";
+    gp << "EOD\nset output '" << dir << "/dbh_histogram.svg'\nset title 'DBH distribution, " << inv.name << " ("
+       << std::count_if(inv.stems.begin(), inv.stems.end(), stand::measured)
+       << " measured stems)'\nset xlabel 'DBH (cm)'\nset ylabel 'stems'\nset style fill solid 0.5\n"
+          "bin(x) = 2.5 * floor(x / 2.5) + 1.25\n"
+          "plot $dbh using (bin($1)):(1) smooth frequency with boxes title '2.5 cm classes'\nunset output\n";
+    plotWithGnuplot(gp.str(), "dbh_histogram.svg in " + dir);
 }
 
 int runStats(int argc, const char* const* argv) {
@@ -138,7 +129,11 @@ int runStats(int argc, const char* const* argv) {
                                           "shortest plot side or less)")
         ("pcf-nr", po::value<long>()->default_value(513), "number of r values from 0 to rmax")
         ("pcf-exact", "evaluate the kernel sums of g(r) exactly instead of as spatstat (R's binned density)")
-        ("plot-dir", po::value<std::string>(), "draw pcf.svg and dbh_histogram.svg there (needs gnuplot)");
+        ("plot-dir", po::value<std::string>(),
+         "draw pcf.svg (g(r) with its CSR envelope; data in pcf.csv) and dbh_histogram.svg there (needs gnuplot)")
+        ("envelope", po::value<int>()->default_value(39),
+         "simulations of complete spatial randomness for the envelope of g(r) in --plot-dir (each plot's own number of "
+         "stems in its own window; 39: pointwise 5 % test, as spatstat's envelope(); 0: none)");
     po::variables_map vm;
     if (!parse(argc, argv, options, vm,
                "sylvarock stats (--stems S.csv --plots P.csv | --points X.csv (--window xmin,ymin,xmax,ymax | "
@@ -153,14 +148,15 @@ int runStats(int argc, const char* const* argv) {
     const stand::StandStatistics stats = stand::standStatistics(inv);
 
     std::optional<stand::PcfReport> pcfReport;
+    if (vm["envelope"].as<int>() < 0) throw InputError("--envelope: a number of simulations, >= 0");
     if (vm.count("pcf-out") || vm.count("plot-dir")) {
-        const stand::PairCorrelation g = stemPairCorrelation(inv, vm);
+        const StandPcf pcf = standPairCorrelation(inv, vm);
         if (vm.count("pcf-out")) {
-            writePcfCsv(vm["pcf-out"].as<std::string>(), g);
-            pcfReport = stand::PcfReport{vm["pcf-out"].as<std::string>(), g.r.back(), g.r.size(),
+            writePcfCsv(vm["pcf-out"].as<std::string>(), pcf.g);
+            pcfReport = stand::PcfReport{vm["pcf-out"].as<std::string>(), pcf.g.r.back(), pcf.g.r.size(),
                                          inv.plots.size() == 1 ? "a single pattern" : kPooling};
         }
-        if (vm.count("plot-dir")) drawFigures(vm["plot-dir"].as<std::string>(), inv, g);
+        if (vm.count("plot-dir")) drawFigures(vm["plot-dir"].as<std::string>(), inv, pcf, vm["envelope"].as<int>());
     }
     std::cout << (vm["json"].as<bool>() ? stand::statsJson(stats, inv.warnings, pcfReport)
                                         : stand::statsTable(stats, inv.warnings, pcfReport));

@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <unordered_map>
 #include <limits>
+#include <map>
+#include <unordered_map>
 
 #include "libstand/EdgeCorrection.hpp"
 #include "libstand/InputError.hpp"
@@ -90,6 +91,34 @@ PairCorrelation poolPairCorrelations(const std::vector<PairCorrelation>& estimat
     }
     pooled.bandwidth = total > 0 ? bandwidth / total : 0;
     return pooled;
+}
+
+std::vector<PlotPoints> plotPoints(const Inventory& inventory) {
+    std::vector<PlotPoints> plots;
+    std::map<std::string, std::size_t> index;
+    for (const auto& p : inventory.plots) {
+        index[p.id] = plots.size();
+        plots.push_back({p.window, {}});
+    }
+    for (const auto& s : inventory.stems) plots[index.at(s.plot)].points.emplace_back(s.x, s.y);
+    return plots;
+}
+
+double defaultPairCorrelationRmax(const std::vector<PlotPoints>& plots) {
+    double rmax = std::numeric_limits<double>::infinity();
+    for (const auto& p : plots) rmax = std::min(rmax, defaultPairCorrelationRmax(p.window, p.points.size()));
+    return rmax;
+}
+
+PairCorrelation pooledPairCorrelation(const std::vector<PlotPoints>& plots, double rmax, std::size_t nr,
+                                      const PairCorrelationOptions& options) {
+    std::vector<PairCorrelation> estimates;
+    std::vector<double> weights;
+    for (const auto& p : plots) {
+        estimates.push_back(pairCorrelation(p.points, p.window, rmax, nr, options));
+        weights.push_back(static_cast<double>(p.points.size()) * (static_cast<double>(p.points.size()) - 1));
+    }
+    return poolPairCorrelations(estimates, weights);
 }
 
 }  // namespace sylva::stand

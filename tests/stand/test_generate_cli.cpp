@@ -2,6 +2,8 @@
 // and the exit status and message of bad options.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -80,4 +82,19 @@ TEST(GenerateCli, BadOptionsExitWithStatusTwoAndSayWhy) {
     r = generate("--structure random --extent 0,0,100,50 --seed -3" + out);
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.output.find("--seed"), std::string::npos) << r.output;
+}
+
+// Figures for people (issue 13): the virtual forests' g(r) against the inventory's and its CSR
+// envelope, and a map; the numbers are written with or without gnuplot.
+TEST(GenerateCli, FiguresCompareTheForestsWithTheInventory) {
+    const std::string dir = ::testing::TempDir() + "/generate_cli_figures/";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const CliRun r = generate("--structure aggregated --extent 0,0,100,60 --seed 3 --realisations 2 --out " + dir + "F.csv --plot-dir " + dir + "fig");
+    ASSERT_EQ(r.status, 0) << r.output;
+    const std::string csv = slurp(dir + "fig/pcf_vs_inventory.csv");
+    EXPECT_EQ(csv.substr(0, csv.find('\n')), "r,g_trans,g_iso,csr_trans_low,csr_trans_high,forest1_g_trans,forest2_g_trans");
+    if (std::system("gnuplot --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "gnuplot not installed";
+    EXPECT_NE(slurp(dir + "fig/pcf_vs_inventory.svg").find("<svg"), std::string::npos);
+    EXPECT_NE(slurp(dir + "fig/forest_map.svg").find("<svg"), std::string::npos);
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -140,6 +141,15 @@ TEST(StatsCli, FiguresWithGnuplot) {
     const CliRun r = stats("--stems " + data("stems_ok.csv") + " --plots " + data("plots_ok.csv") + " --plot-dir " + dir);
     ASSERT_EQ(r.status, 0) << r.err;  // never fails because of figures
     EXPECT_EQ(r.out.find("<svg"), std::string::npos) << "an SVG went to the terminal";
+    // The figure's numbers are written with or without gnuplot: g(r) and its CSR envelope.
+    const std::string pcf = slurp(dir + "/pcf.csv");
+    EXPECT_EQ(pcf.substr(0, pcf.find('\n')), "r,g_trans,g_iso,csr_trans_low,csr_trans_high");
+    EXPECT_GT(std::count(pcf.begin(), pcf.end(), '\n'), 500);
+    const std::string plain = ::testing::TempDir() + "/stats_cli_figures/plain";
+    ASSERT_EQ(stats("--stems " + data("stems_ok.csv") + " --plots " + data("plots_ok.csv") + " --plot-dir " + plain + " --envelope 0").status, 0);
+    const std::string noEnvelope = slurp(plain + "/pcf.csv");
+    EXPECT_EQ(noEnvelope.substr(0, noEnvelope.find('\n')), "r,g_trans,g_iso");
+    EXPECT_EQ(stats("--stems " + data("stems_ok.csv") + " --plots " + data("plots_ok.csv") + " --plot-dir " + plain + " --envelope -1").status, 2);
     if (std::system("gnuplot --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "gnuplot not installed";
     EXPECT_NE(slurp(dir + "/pcf.svg").find("<svg"), std::string::npos);
     EXPECT_NE(slurp(dir + "/dbh_histogram.svg").find("<svg"), std::string::npos);

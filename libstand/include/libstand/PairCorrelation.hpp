@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "libstand/Inventory.hpp"
 #include "libstand/KernelSmoothing.hpp"
 #include "libstand/Window.hpp"
 
@@ -36,5 +37,21 @@ double defaultPairCorrelationRmax(const Window& window, std::size_t nPoints);
 // Pools estimates on the same r grid (e.g. the plots of a stand) as a weighted mean; estimates with
 // weight 0 (plots with fewer than 2 stems) are left out. Throws InputError if the r grids differ.
 PairCorrelation poolPairCorrelations(const std::vector<PairCorrelation>& estimates, const std::vector<double>& weights);
+
+// One plot of a stand (or a single pattern) as g(r) sees it.
+struct PlotPoints {
+    Window window;
+    std::vector<Eigen::Vector2d> points;
+};
+
+// Each plot of the inventory with its stems' positions (every stem, measured or not).
+std::vector<PlotPoints> plotPoints(const Inventory& inventory);
+// The largest r for all plots: the smallest of their defaultPairCorrelationRmax.
+double defaultPairCorrelationRmax(const std::vector<PlotPoints>& plots);
+
+// A stand's g(r): each plot's estimate on one r grid, pooled with weights n(n-1), the number of
+// ordered pairs (a single plot is its own pool).
+PairCorrelation pooledPairCorrelation(const std::vector<PlotPoints>& plots, double rmax, std::size_t nr,
+                                      const PairCorrelationOptions& options = {});
 
 }  // namespace sylva::stand

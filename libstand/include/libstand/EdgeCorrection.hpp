@@ -4,11 +4,14 @@
 // up-weighted. Both weights follow spatstat (edge.Trans, edge.Ripley), including its cap of 100.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <memory>
 #include <vector>
 
 #include "libstand/Window.hpp"
 
 namespace sylva::stand {
+
+class PolygonSetCovariance;
 
 // Translation correction (Ohser & Stoyan): w(v) = |W| / |W ∩ (W + v)| for the pair vector v.
 class TranslationCorrection {
@@ -20,9 +23,7 @@ public:
 
 private:
     Window window_;
-    std::vector<std::vector<Eigen::Vector2d>> convexParts_;  // convex partitions of the window's rings
-    std::vector<Eigen::AlignedBox2d> partBoxes_;             // their bounding boxes
-    std::vector<double> partSigns_;                          // +1 for the outer ring's, -1 for a hole's
+    std::shared_ptr<const PolygonSetCovariance> polygon_;  // null for a rectangle (closed form)
 };
 
 // Fraction of the circle of radius r about c (c inside W) whose circumference lies inside W.

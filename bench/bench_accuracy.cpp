@@ -34,7 +34,7 @@
 #include "libdem/CampaignSummary.hpp"
 #include "libdem/SimulationError.hpp"
 #include "libstand/ForestGenerator.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 #include "libstand/Inventory.hpp"
 
 namespace po = boost::program_options;

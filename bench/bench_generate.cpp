@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "libstand/ForestGenerator.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 #include "libstand/Inventory.hpp"
 
 using namespace sylva::stand;

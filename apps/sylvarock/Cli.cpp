@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "libdem/OptionErrorMessage.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::cli {
 

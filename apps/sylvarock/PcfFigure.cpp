@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "Gnuplot.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::cli {
 

@@ -13,7 +13,7 @@
 #include "libassess/CampaignPlan.hpp"
 #include "libassess/MpiWorld.hpp"
 #include "libassess/Report.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::cli {
 namespace {

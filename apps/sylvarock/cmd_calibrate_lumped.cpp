@@ -11,8 +11,8 @@
 #include "ProgressBar.hpp"
 #include "libdem/Campaign.hpp"
 #include "libdem/LumpedCalibration.hpp"
-#include "libstand/CsvTable.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/CsvTable.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::cli {
 namespace {

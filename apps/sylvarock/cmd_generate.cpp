@@ -10,7 +10,7 @@
 #include "Gnuplot.hpp"
 #include "PcfFigure.hpp"
 #include "libstand/ForestGenerator.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 #include "libstand/Inventory.hpp"
 #include "libstand/PairCorrelation.hpp"
 #include "libstand/PairCorrelationEnvelope.hpp"

@@ -10,7 +10,7 @@
 #include "libdem/Campaign.hpp"
 #include "libdem/SoilContact.hpp"
 #include "libdem/Stem.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::cli {
 namespace {

@@ -16,7 +16,7 @@
 #include "libassess/RankedCampaign.hpp"
 #include "libdem/Campaign.hpp"
 #include "libdem/CampaignSummary.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::cli {
 namespace {

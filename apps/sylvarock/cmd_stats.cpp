@@ -15,7 +15,7 @@
 #include "Cli.hpp"
 #include "Gnuplot.hpp"
 #include "PcfFigure.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 #include "libstand/Inventory.hpp"
 #include "libstand/PairCorrelation.hpp"
 #include "libstand/PairCorrelationEnvelope.hpp"

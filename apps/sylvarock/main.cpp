@@ -6,7 +6,7 @@
 #include "Cli.hpp"
 #include "libassess/MpiWorld.hpp"
 #include "libdem/OptionErrorMessage.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace {
 

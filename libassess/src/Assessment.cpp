@@ -8,7 +8,7 @@
 #include "libassess/CampaignStore.hpp"
 #include "libassess/MpiWorld.hpp"
 #include "libdem/SceneConfig.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 #include "libstand/Inventory.hpp"
 #include "libstand/StandCatalogue.hpp"
 #include "libstand/StandStatistics.hpp"

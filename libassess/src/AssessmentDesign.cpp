@@ -7,7 +7,7 @@
 
 #include "libassess/Hashing.hpp"
 #include "libdem/SceneConfig.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::assess {
 

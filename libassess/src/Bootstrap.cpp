@@ -2,16 +2,15 @@
 
 #include <gsl/gsl_rng.h>
 
-#include <memory>
 #include <stdexcept>
 
 #include "libassess/ProtectionIndex.hpp"
+#include "libcommon/SeededRandom.hpp"
 #include "libdem/CampaignSummary.hpp"
 
 namespace sylva::assess {
 
 namespace {
-using RngPtr = std::unique_ptr<gsl_rng, decltype(&gsl_rng_free)>;
 
 void resampleInto(const std::vector<double>& from, gsl_rng* rng, std::vector<double>& to) {
     for (std::size_t i = 0; i < from.size(); ++i) to.push_back(from[gsl_rng_uniform_int(rng, from.size())]);
@@ -25,16 +24,16 @@ Interval bootstrapProtectionIndex(const std::vector<std::vector<double>>& realis
         if (r.empty()) throw std::invalid_argument("bootstrap: a realisation without runs");
     if (settings.replicates < 2 || !(settings.confidence > 0 && settings.confidence < 1))
         throw std::invalid_argument("bootstrap: needs at least 2 replicates and a confidence in (0, 1)");
-    RngPtr rng(gsl_rng_alloc(gsl_rng_mt19937), &gsl_rng_free);
-    gsl_rng_set(rng.get(), static_cast<unsigned long>(settings.seed));
+    SeededRandom random(settings.seed);
+    gsl_rng* const rng = random.gsl();
     std::vector<double> pf, forest, base;
     pf.reserve(settings.replicates);
     for (int b = 0; b < settings.replicates; ++b) {
         forest.clear();
         base.clear();
         for (std::size_t k = 0; k < realisations.size(); ++k)
-            resampleInto(realisations[gsl_rng_uniform_int(rng.get(), realisations.size())], rng.get(), forest);
-        resampleInto(baseline, rng.get(), base);
+            resampleInto(realisations[gsl_rng_uniform_int(rng, realisations.size())], rng, forest);
+        resampleInto(baseline, rng, base);
         pf.push_back(protectionIndex(forest, base));
     }
     const double tail = (1 - settings.confidence) / 2;

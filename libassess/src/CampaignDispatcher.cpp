@@ -5,7 +5,7 @@
 
 #include "libassess/ForestSummary.hpp"
 #include "libassess/RunRecord.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::assess {
 

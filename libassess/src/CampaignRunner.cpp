@@ -12,7 +12,7 @@
 #include "libassess/ForestSummary.hpp"
 #include "libassess/MpiWorld.hpp"
 #include "libstand/ForestGenerator.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::assess {
 

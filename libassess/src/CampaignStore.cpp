@@ -11,7 +11,7 @@
 
 #include "SqliteDatabase.hpp"
 #include "libdem/Campaign.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace fs = std::filesystem;
 

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "libassess/CampaignPlan.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace fs = std::filesystem;
 

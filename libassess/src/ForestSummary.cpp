@@ -4,7 +4,7 @@
 #include <cstdio>
 
 #include "libassess/Hashing.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::assess {
 

@@ -6,7 +6,7 @@
 #include <iterator>
 
 #include "libdem/Campaign.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::assess {
 

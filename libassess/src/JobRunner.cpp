@@ -6,7 +6,7 @@
 #include "libassess/RunRecord.hpp"
 #include "libdem/Campaign.hpp"
 #include "libstand/ForestGenerator.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::assess {
 

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 #ifdef SYLVAROCK_HAVE_MPI
 #include <mpi.h>

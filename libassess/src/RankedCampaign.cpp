@@ -11,7 +11,7 @@
 #include "RankExchange.hpp"
 #include "RunResultMessage.hpp"
 #include "libassess/MpiWorld.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::assess {
 

@@ -1,5 +1,7 @@
 #include "libassess/Report.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -9,8 +11,7 @@
 
 #include "libassess/CampaignPlan.hpp"
 #include "libdem/CampaignSummary.hpp"
-#include "libstand/InputError.hpp"
-#include "libstand/JsonWriter.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace fs = std::filesystem;
 
@@ -66,15 +67,21 @@ std::vector<RunRecord> pooled(const StructureAssessment& row) {
     return all;
 }
 
-void summaryFields(JsonWriter& j, const ForestSummary& f) {
-    j.field("stems_per_ha", f.stemsPerHa).field("basal_area_m2_ha", f.basalAreaM2Ha).field("mean_dbh_cm", f.meanDbhCm)
-        .field("sd_dbh_cm", f.sdDbhCm).field("clark_evans", f.clarkEvans);
+using Json = nlohmann::ordered_json;  // keys in the order written: the file reads like the report
+
+// Non-finite numbers (an undefined index) are written as null, as nlohmann does for NaN.
+void summaryFields(Json& j, const ForestSummary& f) {
+    j["stems_per_ha"] = f.stemsPerHa;
+    j["basal_area_m2_ha"] = f.basalAreaM2Ha;
+    j["mean_dbh_cm"] = f.meanDbhCm;
+    j["sd_dbh_cm"] = f.sdDbhCm;
+    j["clark_evans"] = f.clarkEvans;
 }
 
-void stopReasonsField(JsonWriter& j, const std::vector<RunRecord>& runs) {
-    j.key("stop_reasons").beginObject();
-    for (const auto& [reason, count] : stopReasons(runs)) j.field(reason, count);
-    j.endObject();
+Json stopReasonsJson(const std::vector<RunRecord>& runs) {
+    Json j = Json::object();
+    for (const auto& [reason, count] : stopReasons(runs)) j[reason] = count;
+    return j;
 }
 
 void writeTables(const std::string& dir, const AssessmentResults& res) {
@@ -201,83 +208,80 @@ void writeMarkdown(const std::string& path, const AssessmentResults& res, const 
 }  // namespace
 
 void writeResultsJson(const std::string& path, const AssessmentResults& res) {
-    auto out = create(path);
-    JsonWriter j(out);
     const auto& d = res.design;
-    j.beginObject();
-    j.key("design").beginObject().field("scene", d.sceneFile);
-    j.key("scene_set").beginArray();
-    for (const auto& o : d.sceneOverrides) j.value(o);
-    j.endArray();
-    j.field("seed", static_cast<unsigned long long>(d.seed))
-        .field("runs_per_realisation", d.runs).field("realisations", d.realisations).field("baseline_runs", d.baselineRuns)
-        .field("bootstrap_replicates", res.bootstrap.replicates).field("confidence", res.bootstrap.confidence);
-    j.key("stands").beginArray();
-    for (const auto& s : d.stands) j.value(s.name);
-    j.endArray().endObject();
+    Json root;
+    Json& design = root["design"];
+    design["scene"] = d.sceneFile;
+    design["scene_set"] = d.sceneOverrides;
+    design["seed"] = d.seed;
+    design["runs_per_realisation"] = d.runs;
+    design["realisations"] = d.realisations;
+    design["baseline_runs"] = d.baselineRuns;
+    design["bootstrap_replicates"] = res.bootstrap.replicates;
+    design["confidence"] = res.bootstrap.confidence;
+    design["stands"] = Json::array();
+    for (const auto& s : d.stands) design["stands"].push_back(s.name);
 
-    std::vector<double> baseline;
-    for (const auto& r : res.baseline) baseline.push_back(r.runoutM);
-    j.key("baseline").beginObject().field("dist50_m", res.baselineDist50).field("runs", static_cast<int>(res.baseline.size()));
-    j.key("runout_quantiles_m").beginObject();
-    for (int p : {10, 25, 50, 75, 90}) j.field("p" + std::to_string(p), dem::quantile(baseline, p / 100.0));
-    j.endObject();
-    stopReasonsField(j, res.baseline);
-    j.endObject();
+    std::vector<double> baselineRunouts;
+    for (const auto& r : res.baseline) baselineRunouts.push_back(r.runoutM);
+    Json& baseline = root["baseline"];
+    baseline["dist50_m"] = res.baselineDist50;
+    baseline["runs"] = res.baseline.size();
+    for (int p : {10, 25, 50, 75, 90}) baseline["runout_quantiles_m"]["p" + std::to_string(p)] = dem::quantile(baselineRunouts, p / 100.0);
+    baseline["stop_reasons"] = stopReasonsJson(res.baseline);
 
-    j.key("stands").beginArray();
+    root["stands"] = Json::array();
     for (const auto& r : res.stands) {
-        j.beginObject().field("name", r.name).field("structure", structureCode(r.structure)).field("pf50", r.pf50);
-        j.numbers("pf50_ci", {r.pf50Ci.low, r.pf50Ci.high});
-        j.field("dist50_m", r.dist50);
-        summaryFields(j, r.inventory);
-        j.field("realisations", static_cast<int>(r.runs.size())).field("runs", d.runs)
-            .field("runs_pooled", static_cast<int>(pooled(r).size()))
-            .field("rank_pf50", r.rankPf50).field("rank_basal_area", r.rankBasalArea);
-        j.numbers("pf50_realisations", r.pf50PerRealisation);
-        j.key("virtual_forests").beginArray();
+        Json row;
+        row["name"] = r.name;
+        row["structure"] = structureCode(r.structure);
+        row["pf50"] = r.pf50;
+        row["pf50_ci"] = {r.pf50Ci.low, r.pf50Ci.high};
+        row["dist50_m"] = r.dist50;
+        summaryFields(row, r.inventory);
+        row["realisations"] = r.runs.size();
+        row["runs"] = d.runs;
+        row["runs_pooled"] = pooled(r).size();
+        row["rank_pf50"] = r.rankPf50;
+        row["rank_basal_area"] = r.rankBasalArea;
+        row["pf50_realisations"] = r.pf50PerRealisation;
+        row["virtual_forests"] = Json::array();
         for (const auto& f : r.forests) {
-            j.beginObject().field("stems", static_cast<unsigned long>(f.stems));
-            summaryFields(j, f);
-            j.endObject();
+            Json forest;
+            forest["stems"] = f.stems;
+            summaryFields(forest, f);
+            row["virtual_forests"].push_back(forest);
         }
-        j.endArray();
-        stopReasonsField(j, pooled(r));
-        j.endObject();
+        row["stop_reasons"] = stopReasonsJson(pooled(r));
+        root["stands"].push_back(row);
     }
-    j.endArray();
+    root["failed_runs"] = res.failedRuns;
 
-    j.key("failed_runs").beginArray();
-    for (const auto& f : res.failedRuns) j.value(f);
-    j.endArray();
-
-    j.key("rankings").beginObject();
+    Json& rankings = root["rankings"];
     for (auto structure : assessedStructures()) {
         // Stand names from the least to the most protective, and from the smallest to the largest G.
         std::vector<const StructureAssessment*> rows;
         for (const auto& r : res.stands)
             if (r.structure == structure) rows.push_back(&r);
-        j.key(structureCode(structure)).beginObject();
+        Json& ranking = rankings[structureCode(structure)];
         for (const auto& [key, rankOf] : {std::pair<std::string, int StructureAssessment::*>{"by_pf50", &StructureAssessment::rankPf50},
                                           {"by_basal_area", &StructureAssessment::rankBasalArea}}) {
             auto sorted = rows;
             std::stable_sort(sorted.begin(), sorted.end(), [rankOf = rankOf](auto* a, auto* b) { return a->*rankOf < b->*rankOf; });
-            j.key(key).beginArray();
-            for (auto* r : sorted) j.value(r->name);
-            j.endArray();
+            ranking[key] = Json::array();
+            for (auto* r : sorted) ranking[key].push_back(r->name);
         }
-        j.endObject();
     }
-    j.endObject();
 
-    j.key("correlations").beginArray();
+    root["correlations"] = Json::array();
     for (const auto& c : res.correlations)
-        j.beginObject().field("structure", structureCode(c.structure)).field("stands", static_cast<unsigned long>(c.stands))
-            .field("pearson_pf50_basal_area", c.basalArea).field("pearson_pf50_mean_dbh", c.meanDbh)
-            .field("pearson_pf50_stems_per_ha", c.stemsPerHa).endObject();
-    j.endArray();
-    j.endObject();
-    out << '\n';
+        root["correlations"].push_back({{"structure", structureCode(c.structure)},
+                                        {"stands", c.stands},
+                                        {"pearson_pf50_basal_area", c.basalArea},
+                                        {"pearson_pf50_mean_dbh", c.meanDbh},
+                                        {"pearson_pf50_stems_per_ha", c.stemsPerHa}});
+    auto out = create(path);
+    out << root.dump(2) << '\n';
 }
 
 FigureSet writeReport(const std::string& reportDir, const AssessmentResults& results) {

@@ -8,7 +8,7 @@
 #include "libdem/SimulationError.hpp"
 #include "libdem/SphereContact.hpp"
 #include "libdem/StableStep.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::dem {
 

@@ -6,8 +6,8 @@
 #include <cmath>
 
 #include "libdem/BlockMotion.hpp"
-#include "libdem/RunRandom.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/SeededRandom.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::dem {
 
@@ -59,7 +59,7 @@ private:
 }  // namespace
 
 Release drawRelease(const Scene& scene, std::uint64_t seed) {
-    RunRandom rng(seed);
+    SeededRandom rng(seed);
     const auto& cfg = scene.config();
     const auto& rel = cfg.release;
     Quat q = Quat::Identity();

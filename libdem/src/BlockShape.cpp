@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::dem {
 

@@ -7,7 +7,7 @@
 
 #include "libdem/LumpedRun.hpp"
 #include "libdem/SimulationError.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::dem {
 

@@ -2,16 +2,19 @@
 
 #include <gsl/gsl_statistics_double.h>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 
-#include "libstand/InputError.hpp"
-#include "libstand/JsonWriter.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::dem {
+
+using Json = nlohmann::ordered_json;  // keys in the order written
 
 double quantile(std::vector<double> v, double p) {
     if (v.empty()) return std::nan("");
@@ -107,77 +110,76 @@ void writeImpactsCsv(const std::string& path, const std::vector<RunResult>& runs
 }
 
 void writeImpactEnergyJson(const std::string& path, const RunResult& r) {
-    auto out = openOut(path);
-    JsonWriter j(out);
     const ForestLedger& f = r.forestEnergy;
-    j.beginObject();
-    j.field("impacts", static_cast<int>(r.impacts.size()));
+    Json j;
+    j["impacts"] = r.impacts.size();
     if (!r.impacts.empty()) {
         const TreeImpact& i = r.impacts.front();
-        j.field("kinetic_before_j", i.energyBefore).field("kinetic_after_j", i.energyAfter);
-        j.field("speed_before_m_s", i.speedBefore).field("speed_after_m_s", i.speedAfter);
-        j.field("impact_height_m", i.height).field("eccentricity", i.eccentricity);
-        j.field("stem_broken", i.stemBroken).field("root_yielded", i.rootYielded).field("root_failed", i.rootFailed);
-        j.field("break_height_m", i.breakHeight).field("stem_height_m", i.stemHeight);  // null: not broken
+        j["kinetic_before_j"] = i.energyBefore;
+        j["kinetic_after_j"] = i.energyAfter;
+        j["speed_before_m_s"] = i.speedBefore;
+        j["speed_after_m_s"] = i.speedAfter;
+        j["impact_height_m"] = i.height;
+        j["eccentricity"] = i.eccentricity;
+        j["stem_broken"] = i.stemBroken;
+        j["root_yielded"] = i.rootYielded;
+        j["root_failed"] = i.rootFailed;
+        j["break_height_m"] = i.breakHeight;  // null: not broken
+        j["stem_height_m"] = i.stemHeight;
     } else {
-        j.field("stem_broken", false).field("root_yielded", false).field("root_failed", false);
+        j["stem_broken"] = false;
+        j["root_yielded"] = false;
+        j["root_failed"] = false;
     }
-    j.key("dissipated_j").beginObject();
-    j.field("bending_plasticity", f.bendingPlasticity).field("bending_damping", f.bendingDamping);
-    j.field("root_plasticity", f.rootPlasticity).field("rupture", f.rupture);
-    j.field("contact_friction", f.contactFriction).field("soil_damping", r.energy.contactDamping);
-    j.field("soil_friction", r.energy.friction).field("stem_soil_damping", f.contactDamping);
-    j.field("contact_crushing", f.contactCrushing);
-    j.field("left_vibrating_in_stems", f.frozen);
-    j.endObject();
+    j["dissipated_j"] = {{"bending_plasticity", f.bendingPlasticity}, {"bending_damping", f.bendingDamping},
+                         {"root_plasticity", f.rootPlasticity},       {"rupture", f.rupture},
+                         {"contact_friction", f.contactFriction},     {"soil_damping", r.energy.contactDamping},
+                         {"soil_friction", r.energy.friction},        {"stem_soil_damping", f.contactDamping},
+                         {"contact_crushing", f.contactCrushing},     {"left_vibrating_in_stems", f.frozen}};
     // The tree's own terms over the impact only (first contact to the block leaving the tree).
     const StemLedger during = r.impacts.empty() ? StemLedger{} : r.impacts.front().duringImpact;
-    j.key("impact_dissipated_j").beginObject();
-    j.field("bending_plasticity", during.bendingPlasticity).field("bending_damping", during.bendingDamping);
-    j.field("root_plasticity", during.rootPlasticity).field("rupture", during.rupture);
-    j.endObject();
-    j.field("created_by_unloading_law_j", f.unloadingGain);
-    j.field("energy_imbalance", r.energy.imbalance).field("energy_flag", r.energy.flagged);
-    j.endObject();
-    out << "\n";
+    j["impact_dissipated_j"] = {{"bending_plasticity", during.bendingPlasticity}, {"bending_damping", during.bendingDamping},
+                                {"root_plasticity", during.rootPlasticity},       {"rupture", during.rupture}};
+    j["created_by_unloading_law_j"] = f.unloadingGain;
+    j["energy_imbalance"] = r.energy.imbalance;
+    j["energy_flag"] = r.energy.flagged;
+    openOut(path) << j.dump(2) << "\n";
 }
 
 void writeSummaryJson(const std::string& path, const CampaignSummary& s, double wallSeconds, const std::string& scene) {
-    auto out = openOut(path);
-    JsonWriter j(out);
-    j.beginObject();
-    j.field("scene", scene).field("runs", s.runs).field("wall_s", wallSeconds);
-    j.field("dist50_m", s.dist50);
-    j.key("runout_quantiles_m").beginObject();
-    for (const auto& [p, v] : s.runoutQuantiles) j.field("p" + std::to_string(p), v);
-    j.endObject();
-    j.field("runout_horizontal50_m", s.horizontal50);
-    j.field("lateral_sd_m", s.lateralSd).field("lateral_range90_m", s.lateralRange90);
-    j.field("energy_line_deg", s.energyLine50).field("energy_line_min_deg", s.energyLineMin).field("energy_line_max_deg", s.energyLineMax);
-    j.field("mean_speed50_m_s", s.meanSpeed50).field("max_speed50_m_s", s.maxSpeed50);
-    j.field("max_bounce50_m", s.maxBounce50).field("share_max_bounce_le_1m", s.shareBounceBelow1m);
-    j.field("cpu_per_run50_s", s.cpu50).field("worst_energy_imbalance", s.worstEnergyImbalance);
-    j.field("energy_flagged_runs", s.energyFlaggedRuns);
-    j.field("failed_runs", s.failedRuns);
+    Json j;
+    j["scene"] = scene;
+    j["runs"] = s.runs;
+    j["wall_s"] = wallSeconds;
+    j["dist50_m"] = s.dist50;
+    for (const auto& [p, v] : s.runoutQuantiles) j["runout_quantiles_m"]["p" + std::to_string(p)] = v;
+    j["runout_horizontal50_m"] = s.horizontal50;
+    j["lateral_sd_m"] = s.lateralSd;
+    j["lateral_range90_m"] = s.lateralRange90;
+    j["energy_line_deg"] = s.energyLine50;
+    j["energy_line_min_deg"] = s.energyLineMin;
+    j["energy_line_max_deg"] = s.energyLineMax;
+    j["mean_speed50_m_s"] = s.meanSpeed50;
+    j["max_speed50_m_s"] = s.maxSpeed50;
+    j["max_bounce50_m"] = s.maxBounce50;
+    j["share_max_bounce_le_1m"] = s.shareBounceBelow1m;
+    j["cpu_per_run50_s"] = s.cpu50;
+    j["worst_energy_imbalance"] = s.worstEnergyImbalance;
+    j["energy_flagged_runs"] = s.energyFlaggedRuns;
+    j["failed_runs"] = s.failedRuns;
     // Where the steps' time went, summed over the runs (bench/bench_forest prints the shares).
-    j.key("time_by_phase_s").beginObject();
-    for (std::size_t p = 0; p < kStepPhases; ++p) j.field(name(static_cast<StepPhase>(p)), s.phases.seconds[p]);
-    j.endObject();
-    j.key("stop_reasons").beginObject();
-    for (const auto& [k, v] : s.stopReasons) j.field(k, v);
-    j.endObject();
+    for (std::size_t p = 0; p < kStepPhases; ++p) j["time_by_phase_s"][name(static_cast<StepPhase>(p))] = s.phases.seconds[p];
+    j["stop_reasons"] = Json::object();
+    for (const auto& [k, v] : s.stopReasons) j["stop_reasons"][k] = v;
     // Where the energy the forest took went, over all runs; what was frozen when stems were put to
     // sleep still vibrating must stay small next to the trees' own terms (issue 11, point 3).
     const ForestLedger& f = s.forestEnergy;
-    j.key("forest_energy_j").beginObject();
-    j.field("bending_plasticity", f.bendingPlasticity).field("bending_damping", f.bendingDamping);
-    j.field("root_plasticity", f.rootPlasticity).field("rupture", f.rupture);
-    j.field("contact_friction", f.contactFriction).field("stem_soil_damping", f.contactDamping);
-    j.field("contact_crushing", f.contactCrushing).field("left_vibrating_in_stems", f.frozen);
-    j.endObject();
-    j.field("left_vibrating_share_of_tree_terms", f.treeTerms() > 0 ? f.frozen / f.treeTerms() : 0.0);
-    j.endObject();
-    out << "\n";
+    j["forest_energy_j"] = {{"bending_plasticity", f.bendingPlasticity}, {"bending_damping", f.bendingDamping},
+                            {"root_plasticity", f.rootPlasticity},       {"rupture", f.rupture},
+                            {"contact_friction", f.contactFriction},     {"stem_soil_damping", f.contactDamping},
+                            {"contact_crushing", f.contactCrushing},     {"left_vibrating_in_stems", f.frozen}};
+    j["left_vibrating_share_of_tree_terms"] = f.treeTerms() > 0 ? f.frozen / f.treeTerms() : 0.0;
+    openOut(path) << j.dump(2) << "\n";
 }
 
 void writeTrajectories(const std::string& dir, const std::vector<RunResult>& runs) {

@@ -12,7 +12,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::dem {
 namespace {

@@ -7,8 +7,8 @@
 #include <functional>
 
 #include "libdem/Campaign.hpp"
-#include "libdem/RunRandom.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/SeededRandom.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::dem {
 namespace {
@@ -31,7 +31,7 @@ Estimate bootstrap(const std::vector<double>& sample, const std::function<double
                    std::uint64_t seed) {
     if (sample.empty()) throw std::invalid_argument("bootstrap of an empty sample");
     constexpr int kReplicates = 1000;
-    RunRandom rng(seed);
+    SeededRandom rng(seed);
     std::vector<double> values(kReplicates), resample(sample.size());
     for (double& v : values) {
         for (double& x : resample) x = sample[std::min(sample.size() - 1, static_cast<std::size_t>(rng.uniform(0, sample.size())))];

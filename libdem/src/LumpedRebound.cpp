@@ -12,7 +12,7 @@ double LumpedRebound::tangentialRestitution(double obstacleHeight) const {
     return 1 / (1 + obstacleHeight / radius_);
 }
 
-Vec3 LumpedRebound::apply(const Vec3& v, const Vec3& n, RunRandom& rng) const {
+Vec3 LumpedRebound::apply(const Vec3& v, const Vec3& n, SeededRandom& rng) const {
     // The obstacle met: rg70 in 70 % of the rebounds, rg20 in 20 %, rg10 in 10 %.
     const double u = rng.uniform(0, 1);
     const double h = std::min(u < 0.7 ? p_.rg70 : u < 0.9 ? p_.rg20 : p_.rg10, radius_);

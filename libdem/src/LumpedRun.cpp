@@ -6,7 +6,7 @@
 
 #include "libdem/LumpedRebound.hpp"
 #include "libdem/LumpedTreeImpact.hpp"
-#include "libdem/RunRandom.hpp"
+#include "libcommon/SeededRandom.hpp"
 
 namespace sylva::dem {
 namespace {
@@ -68,7 +68,7 @@ RunResult simulateLumped(const Scene& scene, int run, std::uint64_t seed, const 
     r.run = run;
     r.seed = seed;
     const Release release = drawRelease(scene, seed);
-    RunRandom rng(seed ^ 0x6C756D70ULL);  // its own stream: the release draws stay the DEM's
+    SeededRandom rng(seed ^ 0x6C756D70ULL);  // its own stream: the release draws stay the DEM's
     Vec3 p = release.position, v = release.velocity;
     r.release = p;
     double t = 0, movingTime = 0, movingDistance = 0;

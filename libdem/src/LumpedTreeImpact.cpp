@@ -17,7 +17,7 @@ double LumpedTreeImpact::eccentricityShare(double e) {
 }
 
 LumpedTreeImpact::Outcome LumpedTreeImpact::apply(const Vec3& v, double dbh, double eccentricity, double /*height*/,
-                                                  double mass, RunRandom& rng) const {
+                                                  double mass, SeededRandom& rng) const {
     const double energy = 0.5 * mass * v.squaredNorm();
     const double taken = eccentricityShare(eccentricity) * capacity(dbh);
     if (taken >= energy) return {Vec3::Zero(), false};

@@ -1,7 +1,7 @@
 #include "libdem/Scene.hpp"
 
 #include "libstand/Allometry.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::dem {
 

@@ -10,7 +10,7 @@
 
 #include "libdem/OptionErrorMessage.hpp"
 #include "libdem/StemParameterSet.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::dem {
 

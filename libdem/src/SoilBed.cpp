@@ -1,7 +1,5 @@
 #include "libdem/SoilBed.hpp"
 
-#include <gsl/gsl_rng.h>
-
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -11,7 +9,8 @@
 #include <numeric>
 #include <sstream>
 
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
+#include "libcommon/SeededRandom.hpp"
 
 namespace sylva::dem {
 namespace {
@@ -21,18 +20,16 @@ namespace {
 class RowOffsets {
 public:
     RowOffsets(std::uint64_t seed, double radius, double spacing)
-        : rng_(gsl_rng_alloc(gsl_rng_mt19937), &gsl_rng_free), radius_(radius), spacing_(spacing) {
-        gsl_rng_set(rng_.get(), static_cast<unsigned long>(seed));
-    }
+        : rng_(seed), radius_(radius), spacing_(spacing) {}
     // A row's spheres sit at y = ymin + offset + k d, offset uniform in [0, 2 R_soil] (Fig. 7).
     // Column 0 is the last of them at or below ymin, so that the row also covers [ymin, ymin + offset).
     double nextColumn0(double ymin) {
-        const double offset = 2.0 * radius_ * gsl_rng_uniform(rng_.get());
+        const double offset = 2.0 * radius_ * rng_.uniform();
         return ymin + offset - std::ceil(offset / spacing_) * spacing_;
     }
 
 private:
-    std::unique_ptr<gsl_rng, void (*)(gsl_rng*)> rng_;
+    SeededRandom rng_;
     double radius_, spacing_;
 };
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::dem {
 

@@ -8,7 +8,7 @@
 #include "libdem/RotationVector.hpp"
 #include "libdem/StableStep.hpp"
 #include "libstand/Allometry.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::dem {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::dem {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::dem {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::dem {
 

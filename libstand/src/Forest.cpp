@@ -7,8 +7,8 @@
 #include <unordered_map>
 
 #include "libstand/Allometry.hpp"
-#include "libstand/CsvTable.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/CsvTable.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::stand {
 

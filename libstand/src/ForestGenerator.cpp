@@ -10,8 +10,9 @@
 
 #include "BalancedSampler.hpp"
 #include "StemGrid.hpp"
+#include "libcommon/SeededRandom.hpp"
 #include "libstand/Allometry.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::stand {
 
@@ -134,8 +135,8 @@ void drawSingles(ForestBuilder& builder, const std::vector<StemTemplate>& pool, 
 }  // namespace
 
 GeneratedForest generateForest(const StandCatalogue& stand, const Window& extent, const GenerationSettings& settings) {
-    const std::unique_ptr<gsl_rng, decltype(&gsl_rng_free)> rng(gsl_rng_alloc(gsl_rng_mt19937), &gsl_rng_free);
-    gsl_rng_set(rng.get(), settings.seed);
+    SeededRandom random(settings.seed);
+    gsl_rng* const rng = random.gsl();
 
     // Checked before anything is drawn: an extent typed in mm (or to 1e308) would exhaust memory.
     const double expected = stand.stemsPerHa() * extent.area() / 1e4;
@@ -146,7 +147,7 @@ GeneratedForest generateForest(const StandCatalogue& stand, const Window& extent
         throw InputError(what.str());
     }
     const auto stems = static_cast<std::size_t>(std::llround(expected));
-    ForestBuilder builder(stand, extent, settings, rng.get());
+    ForestBuilder builder(stand, extent, settings, rng);
     if (stems == 0) builder.warn("the extent is too small for a single stem at " + std::to_string(stand.stemsPerHa()) + " stems/ha");
 
     ForestStructure structure = settings.structure;
@@ -157,7 +158,7 @@ GeneratedForest generateForest(const StandCatalogue& stand, const Window& extent
     }
 
     if (structure == ForestStructure::Random) {
-        drawSingles(builder, stand.allStems(), stems, rng.get());
+        drawSingles(builder, stand.allStems(), stems, rng);
         return builder.take();
     }
 
@@ -165,7 +166,7 @@ GeneratedForest generateForest(const StandCatalogue& stand, const Window& extent
     // drawn is trimmed to that budget, single trees fill the rest, so N is exact and stool stems
     // and single trees (whose diameters differ) keep their proportions.
     const auto stoolBudget = static_cast<std::size_t>(std::llround(static_cast<double>(stems) * stand.stoolStemShare()));
-    BalancedSampler drawStool(stand.stools().size(), rng.get());
+    BalancedSampler drawStool(stand.stools().size(), rng);
     std::size_t inStools = 0;
     while (inStools < stoolBudget) {
         const StoolTemplate& stool = stand.stools()[drawStool.next()];
@@ -173,7 +174,7 @@ GeneratedForest generateForest(const StandCatalogue& stand, const Window& extent
         builder.placeStool(stool, count);
         inStools += count;
     }
-    drawSingles(builder, stand.singles(), stems - stoolBudget, rng.get());
+    drawSingles(builder, stand.singles(), stems - stoolBudget, rng);
     return builder.take();
 }
 

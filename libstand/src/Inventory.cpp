@@ -8,8 +8,8 @@
 #include <tuple>
 
 #include "libstand/Allometry.hpp"
-#include "libstand/CsvTable.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/CsvTable.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::stand {
 namespace {

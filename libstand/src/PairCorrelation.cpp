@@ -8,7 +8,7 @@
 #include <unordered_map>
 
 #include "libstand/EdgeCorrection.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 #include "libstand/NearestNeighbours.hpp"
 
 namespace sylva::stand {

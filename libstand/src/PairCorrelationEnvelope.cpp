@@ -1,25 +1,23 @@
 #include "libstand/PairCorrelationEnvelope.hpp"
 
-#include <gsl/gsl_rng.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <memory>
 
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
+#include "libcommon/SeededRandom.hpp"
 
 namespace sylva::stand {
 
 namespace {
 
 // n points uniform in the window (binomial process: CSR given n), by rejection from its bounding box.
-std::vector<Eigen::Vector2d> uniformPoints(const Window& window, std::size_t n, gsl_rng* rng) {
+std::vector<Eigen::Vector2d> uniformPoints(const Window& window, std::size_t n, SeededRandom& rng) {
     const Eigen::Vector2d lo = window.lower(), span = window.upper() - window.lower();
     std::vector<Eigen::Vector2d> points;
     points.reserve(n);
     while (points.size() < n) {
-        const Eigen::Vector2d p(lo.x() + span.x() * gsl_rng_uniform(rng), lo.y() + span.y() * gsl_rng_uniform(rng));
+        const Eigen::Vector2d p(lo.x() + span.x() * rng.uniform(), lo.y() + span.y() * rng.uniform());
         if (window.contains(p)) points.push_back(p);
     }
     return points;
@@ -38,8 +36,7 @@ void widen(std::vector<double>& low, std::vector<double>& high, const std::vecto
 PairCorrelationEnvelope csrEnvelope(const std::vector<PlotPoints>& plots, double rmax, std::size_t nr, int simulations,
                                     std::uint32_t seed, const PairCorrelationOptions& options) {
     if (simulations < 1) throw InputError("CSR envelope: need at least 1 simulation, got " + std::to_string(simulations));
-    const std::unique_ptr<gsl_rng, decltype(&gsl_rng_free)> rng(gsl_rng_alloc(gsl_rng_mt19937), &gsl_rng_free);
-    gsl_rng_set(rng.get(), seed);
+    SeededRandom rng(seed);
     PairCorrelationEnvelope e;
     e.simulations = simulations;
     const double inf = std::numeric_limits<double>::infinity();
@@ -49,7 +46,7 @@ PairCorrelationEnvelope csrEnvelope(const std::vector<PlotPoints>& plots, double
     e.isoHigh.assign(nr, -inf);
     std::vector<PlotPoints> simulated = plots;
     for (int s = 0; s < simulations; ++s) {
-        for (std::size_t p = 0; p < plots.size(); ++p) simulated[p].points = uniformPoints(plots[p].window, plots[p].points.size(), rng.get());
+        for (std::size_t p = 0; p < plots.size(); ++p) simulated[p].points = uniformPoints(plots[p].window, plots[p].points.size(), rng);
         const PairCorrelation g = pooledPairCorrelation(simulated, rmax, nr, options);
         e.r = g.r;
         widen(e.transLow, e.transHigh, g.trans);

@@ -5,8 +5,8 @@
 #include <map>
 #include <sstream>
 
-#include "libstand/CsvTable.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/CsvTable.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::stand {
 

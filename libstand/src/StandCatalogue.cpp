@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <map>
 
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::stand {
 

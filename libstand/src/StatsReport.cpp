@@ -1,5 +1,7 @@
 #include "libstand/StatsReport.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -18,23 +20,6 @@ std::string number(const std::optional<double>& v, const char* format = "%.10g")
     return v ? number(*v, format) : "null";
 }
 
-std::string quoted(const std::string& s) {
-    std::string out = "\"";
-    for (const char c : s) {
-        if (c == '"' || c == '\\') {
-            out += '\\';
-            out += c;
-        } else if (static_cast<unsigned char>(c) < 0x20) {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "\\u%04x", c);
-            out += buf;
-        } else {
-            out += c;
-        }
-    }
-    return out + "\"";
-}
-
 std::string clarkEvansNote(const StandStatistics& s) {
     if (s.plots.size() == 1) return "a single plot or pattern: the stand's Clark-Evans indices are its own";
     return "the stand's Clark-Evans indices are the means of the per-plot values (naive over " +
@@ -42,50 +27,54 @@ std::string clarkEvansNote(const StandStatistics& s) {
            std::to_string(s.plotsInDonnellyMean) + " rectangular ones)";
 }
 
-// The keys shared by the stand and its plots.
-void dendrometricsJson(std::ostream& os, const DendrometricStatistics& d, const std::string& indent,
-                       const std::string& ceExtra) {
+using Json = nlohmann::ordered_json;  // keys in the order written
+
+Json optionalNumber(const std::optional<double>& v) { return v ? Json(*v) : Json(nullptr); }
+
+// The keys shared by the stand and its plots (non-finite numbers are written as null).
+void dendrometrics(Json& j, const DendrometricStatistics& d) {
     const ClarkEvansIndex& ce = d.clarkEvans;
-    os << indent << "\"n\": " << d.n << ",\n"
-       << indent << "\"area_ha\": " << number(d.areaHa) << ",\n"
-       << indent << "\"stems_per_ha\": " << number(d.stemsPerHa) << ",\n"
-       << indent << "\"basal_area_m2_ha\": " << number(d.basalAreaM2Ha) << ",\n"
-       << indent << "\"mean_dbh_cm\": " << number(d.meanDbhCm) << ",\n"
-       << indent << "\"sd_dbh_cm\": " << number(d.sdDbhCm) << ",\n"
-       << indent << "\"n_stools\": " << d.nStools << ",\n"
-       << indent << "\"stems_per_stool\": " << number(d.stemsPerStool) << ",\n"
-       << indent << "\"stool_share\": " << number(d.stoolShare) << ",\n"
-       << indent << "\"clark_evans\": {\"naive\": " << number(ce.naive) << ", \"donnelly\": " << number(ce.donnelly)
-       << ", \"guard\": " << number(ce.guard) << ", \"cdf\": " << number(ce.cdf)
-       << ", \"mean_nn_m\": " << (ce.naive ? number(ce.meanNearestNeighbour) : "null") << ceExtra << "}";
+    j["n"] = d.n;
+    j["area_ha"] = d.areaHa;
+    j["stems_per_ha"] = d.stemsPerHa;
+    j["basal_area_m2_ha"] = optionalNumber(d.basalAreaM2Ha);
+    j["mean_dbh_cm"] = optionalNumber(d.meanDbhCm);
+    j["sd_dbh_cm"] = optionalNumber(d.sdDbhCm);
+    j["n_stools"] = d.nStools;
+    j["stems_per_stool"] = optionalNumber(d.stemsPerStool);
+    j["stool_share"] = optionalNumber(d.stoolShare);
+    j["clark_evans"] = {{"naive", optionalNumber(ce.naive)},
+                        {"donnelly", optionalNumber(ce.donnelly)},
+                        {"guard", optionalNumber(ce.guard)},
+                        {"cdf", optionalNumber(ce.cdf)},
+                        {"mean_nn_m", ce.naive ? Json(ce.meanNearestNeighbour) : Json(nullptr)}};
 }
 
 }  // namespace
 
 std::string statsJson(const StandStatistics& s, const std::vector<std::string>& warnings,
                       const std::optional<PcfReport>& pcf) {
-    std::ostringstream os;
-    os << "{\n  \"name\": " << quoted(s.name) << ",\n  \"stand\": {\n    \"n_plots\": " << s.plots.size() << ",\n";
-    dendrometricsJson(os, s.stand, "    ", ", \"note\": " + quoted(clarkEvansNote(s)));
-    os << "\n  },\n  \"plots\": [";
-    for (std::size_t i = 0; i < s.plots.size(); ++i) {
-        const PlotStatistics& p = s.plots[i];
-        os << (i ? ",\n" : "\n") << "    {\n      \"id\": " << quoted(p.id) << ",\n      \"window\": " << quoted(p.window)
-           << ",\n      \"empty\": " << (p.empty ? "true" : "false") << ",\n";
-        dendrometricsJson(os, p.stats, "      ",
-                          ", \"guard_distance_m\": " + number(p.stats.clarkEvans.guardDistance) +
-                              ", \"n_in_guard\": " + std::to_string(p.stats.clarkEvans.nInGuard));
-        os << "\n    }";
+    Json root;
+    root["name"] = s.name;
+    Json& stand = root["stand"];
+    stand["n_plots"] = s.plots.size();
+    dendrometrics(stand, s.stand);
+    stand["clark_evans"]["note"] = clarkEvansNote(s);
+    root["plots"] = Json::array();
+    for (const PlotStatistics& p : s.plots) {
+        Json plot;
+        plot["id"] = p.id;
+        plot["window"] = p.window;
+        plot["empty"] = p.empty;
+        dendrometrics(plot, p.stats);
+        plot["clark_evans"]["guard_distance_m"] = optionalNumber(p.stats.clarkEvans.guardDistance);
+        plot["clark_evans"]["n_in_guard"] = p.stats.clarkEvans.nInGuard;
+        root["plots"].push_back(plot);
     }
-    os << "\n  ],\n  \"warnings\": [";
-    for (std::size_t i = 0; i < warnings.size(); ++i) os << (i ? ", " : "") << quoted(warnings[i]);
-    os << "]";
+    root["warnings"] = warnings;
     if (pcf)
-        os << ",\n  \"pcf\": {\"file\": " << quoted(pcf->file) << ", \"rmax_m\": " << number(pcf->rmax)
-           << ", \"n_r\": " << pcf->nr << ", \"columns\": \"r,g_trans,g_iso\", \"pooling\": " << quoted(pcf->pooling)
-           << "}";
-    os << "\n}\n";
-    return os.str();
+        root["pcf"] = {{"file", pcf->file}, {"rmax_m", pcf->rmax}, {"n_r", pcf->nr}, {"columns", "r,g_trans,g_iso"}, {"pooling", pcf->pooling}};
+    return root.dump(2) + "\n";
 }
 
 std::string statsTable(const StandStatistics& s, const std::vector<std::string>& warnings,

@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::stand {
 

@@ -16,7 +16,7 @@
 #include "libassess/CampaignStore.hpp"
 #include "libassess/Report.hpp"
 #include "StoreEdit.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace fs = std::filesystem;
 using namespace sylva::assess;

@@ -11,7 +11,7 @@
 #include "libassess/CampaignStore.hpp"
 #include "libdem/Campaign.hpp"
 #include "StoreEdit.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace fs = std::filesystem;
 using namespace sylva::assess;

@@ -6,7 +6,7 @@
 #include "DemTestScenes.hpp"
 #include "libdem/BlockMotion.hpp"
 #include "libdem/SimulationError.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 using namespace sylva::dem;
 using namespace sylva::dem::testing;

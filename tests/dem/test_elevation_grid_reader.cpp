@@ -7,7 +7,7 @@
 #include <string>
 
 #include "libdem/ElevationGrid.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 using sylva::InputError;
 using sylva::dem::ElevationGrid;

@@ -17,7 +17,7 @@
 #include "libdem/Campaign.hpp"
 #include "libdem/CampaignSummary.hpp"
 #include "libdem/SimulationError.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 using namespace sylva::dem;
 using namespace sylva::dem::testing;

@@ -10,7 +10,7 @@
 #include "libdem/LumpedRebound.hpp"
 #include "libdem/LumpedRun.hpp"
 #include "libdem/LumpedTreeImpact.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 using namespace sylva::dem;
 
@@ -49,7 +49,7 @@ TEST(LumpedRebound, MatchesTheRestitutionOfTheSoilTypeAndTheObstacle) {
     const double radius = 0.5;
     const LumpedRebound rebound(p, radius);
     EXPECT_DOUBLE_EQ(rebound.tangentialRestitution(0.05), 1 / 1.1);
-    RunRandom rng(3);
+    sylva::SeededRandom rng(3);
     double sum = 0, lo = 1, hi = 0;
     const int n = 20000;
     for (int i = 0; i < n; ++i) {
@@ -75,7 +75,7 @@ TEST(LumpedRebound, RollingIsASuccessionOfSmallRebounds) {
     p.rg70 = p.rg20 = p.rg10 = 0.1;
     p.deviationSdDeg = 0;
     const LumpedRebound rebound(p, 0.5);
-    RunRandom rng(1);
+    sylva::SeededRandom rng(1);
     const Vec3 out = rebound.apply(Vec3(10, 0, 0), Vec3::UnitZ(), rng);
     const double rt = 1 / 1.2, sinA = std::sqrt(1 - 0.8 * 0.8);
     EXPECT_NEAR(out.x(), 10 * rt, 1e-12);
@@ -91,7 +91,7 @@ TEST(LumpedTreeImpact, TakesTheEnergyOfDorrenAndBerger2006) {
     EXPECT_EQ(LumpedTreeImpact::eccentricityShare(0.2), 1.0);
     EXPECT_NEAR(LumpedTreeImpact::eccentricityShare(-0.8), 0.3, 1e-12);
     EXPECT_EQ(LumpedTreeImpact::eccentricityShare(1.0), 0.0);
-    RunRandom rng(5);
+    sylva::SeededRandom rng(5);
     const double mass = 1350;
     // Twice what the tree takes: half is left, the path turned by at most 22.5 degrees (central).
     const double speed = std::sqrt(2 * 2 * e20 / mass);

@@ -6,7 +6,7 @@
 #include <fstream>
 
 #include "libdem/SceneConfig.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 using namespace sylva::dem;
 

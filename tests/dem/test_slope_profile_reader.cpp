@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "libdem/SlopeProfile.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 using sylva::InputError;
 using sylva::dem::SlopeProfile;

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "libdem/Terrain.hpp"
-#include "libstand/CsvTable.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/CsvTable.hpp"
+#include "libcommon/InputError.hpp"
 
 using sylva::InputError;
 using namespace sylva::dem;

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "libdem/Stem.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 using sylva::InputError;
 using namespace sylva::dem;

@@ -10,7 +10,7 @@
 
 #include "libdem/Stem.hpp"
 #include "libdem/StemParameterSet.hpp"
-#include "libstand/CsvTable.hpp"
+#include "libcommon/CsvTable.hpp"
 
 using namespace sylva::dem;
 

@@ -10,7 +10,7 @@
 #include "FuzzFile.hpp"
 #include "libassess/CampaignStore.hpp"
 #include "libdem/Campaign.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace {
 using namespace sylva::assess;

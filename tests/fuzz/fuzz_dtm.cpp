@@ -1,7 +1,7 @@
 // An ESRI ASCII grid DTM.
 #include "FuzzFile.hpp"
 #include "libdem/ElevationGrid.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace sylva;

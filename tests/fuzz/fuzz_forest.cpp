@@ -1,7 +1,7 @@
 // A forest file (x, y, dbh_cm[, stool]) as `simulate --forest` reads it.
 #include "FuzzFile.hpp"
 #include "libstand/Forest.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace sylva;

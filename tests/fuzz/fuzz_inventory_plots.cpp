@@ -1,6 +1,6 @@
 // An inventory's plots file (rectangles or WKT polygons, with holes) against valid stems.
 #include "FuzzFile.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 #include "libstand/Inventory.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

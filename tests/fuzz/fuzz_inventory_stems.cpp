@@ -1,6 +1,6 @@
 // An inventory's stems file (plot, stem, x, y, dbh_cm, species, stool) against two valid plots.
 #include "FuzzFile.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 #include "libstand/Inventory.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

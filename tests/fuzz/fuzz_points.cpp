@@ -1,6 +1,6 @@
 // A point pattern (x, y[, dbh_cm][, stool]) in a rectangle, as `stats --points` reads it.
 #include "FuzzFile.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 #include "libstand/PointPattern.hpp"
 #include "libstand/Window.hpp"
 

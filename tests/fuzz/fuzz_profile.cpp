@@ -1,7 +1,7 @@
 // A slope profile (x, z) CSV.
 #include "FuzzFile.hpp"
 #include "libdem/SlopeProfile.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace sylva;

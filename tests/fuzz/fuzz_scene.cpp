@@ -3,7 +3,7 @@
 // `profile = short-slope.csv` lets the fuzzer past the terrain section.
 #include "FuzzFile.hpp"
 #include "libdem/SceneConfig.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace sylva;

@@ -1,7 +1,7 @@
 // A WKT window (POLYGON with optional holes), then the geometry every statistic asks of it.
 #include "FuzzFile.hpp"
 #include "libstand/EdgeCorrection.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 #include "libstand/Window.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -6,7 +6,7 @@
 
 #include "libstand/Allometry.hpp"
 #include "libstand/Forest.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 using namespace sylva::stand;
 

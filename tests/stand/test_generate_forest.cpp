@@ -8,7 +8,7 @@
 
 #include "libstand/Allometry.hpp"
 #include "libstand/ForestGenerator.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 using namespace sylva::stand;
 

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 #include "libstand/Inventory.hpp"
 #include "libstand/PointPattern.hpp"
 #include "libstand/StandCatalogue.hpp"

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <memory>
 
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 #include "libstand/PairCorrelationEnvelope.hpp"
 
 using namespace sylva::stand;

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "libstand/CsvTable.hpp"
+#include "libcommon/CsvTable.hpp"
 #include "libstand/Inventory.hpp"
 #include "libstand/PointPattern.hpp"
 #include "libstand/StandStatistics.hpp"

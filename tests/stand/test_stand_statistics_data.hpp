@@ -6,7 +6,7 @@
 
 #include <Eigen/Core>
 
-#include "libstand/CsvTable.hpp"
+#include "libcommon/CsvTable.hpp"
 #include "libstand/Window.hpp"
 
 namespace sylva::stand::testdata {

@@ -11,7 +11,7 @@
 #include <regex>
 #include <sstream>
 
-#include "libstand/CsvTable.hpp"
+#include "libcommon/CsvTable.hpp"
 #include "libstand/Inventory.hpp"
 #include "libstand/StandStatistics.hpp"
 #include "test_stand_statistics_data.hpp"

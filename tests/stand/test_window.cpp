@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 #include "libstand/Window.hpp"
 
 using sylva::InputError;

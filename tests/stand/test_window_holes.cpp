@@ -8,7 +8,7 @@
 
 #include "libstand/ClarkEvans.hpp"
 #include "libstand/EdgeCorrection.hpp"
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 #include "libstand/PairCorrelation.hpp"
 #include "libstand/Window.hpp"
 #include "test_stand_statistics_data.hpp"

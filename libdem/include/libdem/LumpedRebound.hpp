@@ -4,7 +4,7 @@
 // the direction turned by a random deviation about the slope's normal.
 #include "libdem/LumpedParams.hpp"
 #include "libdem/RigidBody.hpp"
-#include "libdem/RunRandom.hpp"
+#include "libcommon/SeededRandom.hpp"
 
 namespace sylva::dem {
 
@@ -12,7 +12,7 @@ class LumpedRebound {
 public:
     LumpedRebound(const LumpedParams& params, double blockRadius);
     // Velocity after an impact with velocity `v` on a surface of upward unit normal `n`.
-    Vec3 apply(const Vec3& v, const Vec3& n, RunRandom& rng) const;
+    Vec3 apply(const Vec3& v, const Vec3& n, SeededRandom& rng) const;
     // R_t for an obstacle of height h under a sphere of the block's radius.
     double tangentialRestitution(double obstacleHeight) const;
 

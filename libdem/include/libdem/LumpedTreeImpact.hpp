@@ -3,7 +3,7 @@
 // after Dorren & Berger (2006), scaled by the impact's eccentricity, and is deviated.
 #include "libdem/LumpedParams.hpp"
 #include "libdem/RigidBody.hpp"
-#include "libdem/RunRandom.hpp"
+#include "libcommon/SeededRandom.hpp"
 
 namespace sylva::dem {
 
@@ -18,7 +18,7 @@ public:
         Vec3 velocity;
         bool treeBroken;  // the block had more energy than the stem takes
     };
-    Outcome apply(const Vec3& v, double dbh, double eccentricity, double height, double mass, RunRandom& rng) const;
+    Outcome apply(const Vec3& v, double dbh, double eccentricity, double height, double mass, SeededRandom& rng) const;
 
 private:
     LumpedParams p_;

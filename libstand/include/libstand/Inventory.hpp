@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "libstand/CsvTable.hpp"
+#include "libcommon/CsvTable.hpp"
 #include "libstand/Window.hpp"
 
 namespace sylva::stand {

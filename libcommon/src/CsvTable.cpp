@@ -1,4 +1,4 @@
-#include "libstand/CsvTable.hpp"
+#include "libcommon/CsvTable.hpp"
 
 #include <cerrno>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "libstand/InputError.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva {
 namespace {

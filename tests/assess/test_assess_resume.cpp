@@ -15,6 +15,7 @@
 #include "libassess/CampaignPlan.hpp"
 #include "libassess/CampaignStore.hpp"
 #include "libassess/Report.hpp"
+#include "ShortCampaign.hpp"
 #include "StoreEdit.hpp"
 #include "libcommon/InputError.hpp"
 
@@ -23,10 +24,6 @@ using namespace sylva::assess;
 
 namespace {
 
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
 
 void spit(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary | std::ios::trunc) << text; }
 
@@ -40,14 +37,7 @@ protected:
     void TearDown() override { fs::remove_all(root_); }
 
     AssessmentOptions options(const std::string& out, int threads) const {
-        AssessmentOptions o;
-        o.design.stands.push_back(standFromPrefix(std::string(SYLVAROCK_DATA) + "/stands/GR1"));
-        o.design.sceneFile = std::string(SYLVAROCK_TEST_DATA) + "/../assess/data/short-scene.ini";
-        o.design.runs = 4;
-        o.design.realisations = 2;
-        o.design.baselineRuns = 6;
-        o.design.seed = 3;
-        o.outDir = (root_ / out).string();
+        AssessmentOptions o = shortCampaign(root_ / out, 4, 2, 6, 3);
         o.threads = threads;
         o.bootstrapReplicates = 200;
         return o;

@@ -10,6 +10,7 @@
 
 #include "libassess/CampaignStore.hpp"
 #include "libdem/Campaign.hpp"
+#include "ShortCampaign.hpp"
 #include "StoreEdit.hpp"
 #include "libcommon/InputError.hpp"
 
@@ -29,12 +30,7 @@ protected:
     void SetUp() override {
         dir_ = fs::temp_directory_path() / ("sylvarock-store-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
         fs::remove_all(dir_);
-        design_.stands.push_back(standFromPrefix(std::string(SYLVAROCK_DATA) + "/stands/GR1"));
-        design_.sceneFile = std::string(SYLVAROCK_TEST_DATA) + "/../assess/data/short-scene.ini";
-        design_.runs = 5;
-        design_.realisations = 1;
-        design_.baselineRuns = 3;
-        design_.seed = 99;
+        design_ = shortCampaign(dir_, 5, 1, 3, 99).design;
         plan_ = planCampaigns(design_);  // baseline, GR1_A_001, GR1_NA_001
     }
     void TearDown() override { fs::remove_all(dir_); }

@@ -15,6 +15,7 @@
 #include <iterator>
 #include <string>
 
+#include "ShortCampaign.hpp"
 #include "libassess/Assessment.hpp"
 #include "libassess/Report.hpp"
 
@@ -115,20 +116,9 @@ void installKiller(int killAt) {
     if (sqlite3_vfs_register(&gKiller, 1) != SQLITE_OK) _exit(4);
 }
 
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
 
 AssessmentOptions options(const fs::path& out, bool resume) {
-    AssessmentOptions o;
-    o.design.stands.push_back(standFromPrefix(std::string(SYLVAROCK_DATA) + "/stands/GR1"));
-    o.design.sceneFile = std::string(SYLVAROCK_TEST_DATA) + "/../assess/data/short-scene.ini";
-    o.design.runs = 2;
-    o.design.realisations = 1;
-    o.design.baselineRuns = 2;
-    o.design.seed = 5;
-    o.outDir = out.string();
+    AssessmentOptions o = shortCampaign(out, 2, 1, 2, 5);
     o.resume = resume;
     o.threads = 1;
     o.bootstrapReplicates = 100;

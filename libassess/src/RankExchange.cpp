@@ -52,9 +52,4 @@ std::optional<std::string> CoordinatorLink::exchange(const std::optional<std::st
 
 void CoordinatorLink::done() { world_.send(0, kDone, {}); }
 
-int threadsFor(int requested, long jobs) {
-    const long threads = requested > 0 ? requested : static_cast<long>(std::thread::hardware_concurrency());
-    return static_cast<int>(std::max(1L, std::min(threads, jobs)));
-}
-
 }  // namespace sylva::assess

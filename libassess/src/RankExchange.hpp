@@ -9,10 +9,10 @@
 #include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "libassess/MpiWorld.hpp"
+#include "libcommon/ThreadTeam.hpp"
 
 namespace sylva::assess {
 
@@ -43,16 +43,10 @@ private:
 template <class Job, class Outcome>
 void workOnThreads(int threads, const std::function<std::optional<Job>(std::optional<Outcome> finished)>& exchange,
                    const std::function<Outcome(const Job&)>& work) {
-    auto loop = [&] {
+    runOnThreads(threads, [&] {
         std::optional<Outcome> finished;
         while (const std::optional<Job> job = exchange(std::move(finished))) finished = work(*job);
-    };
-    std::vector<std::thread> pool;
-    for (int t = 0; t < threads; ++t) pool.emplace_back(loop);
-    for (auto& t : pool) t.join();
+    });
 }
-
-// `requested` threads (0: one per core), at least 1 and at most `jobs`.
-int threadsFor(int requested, long jobs);
 
 }  // namespace sylva::assess

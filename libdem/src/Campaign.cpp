@@ -3,11 +3,11 @@
 #include <atomic>
 #include <exception>
 #include <mutex>
-#include <thread>
 
 #include "libdem/LumpedRun.hpp"
 #include "libdem/SimulationError.hpp"
 #include "libcommon/InputError.hpp"
+#include "libcommon/ThreadTeam.hpp"
 
 namespace sylva::dem {
 
@@ -70,11 +70,7 @@ std::vector<RunResult> runCampaign(const Scene& scene, const CampaignOptions& op
             }
         }
     };
-    int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
-    threads = std::max(1, std::min(threads, total));
-    std::vector<std::thread> pool;
-    for (int k = 0; k < threads; ++k) pool.emplace_back(worker);
-    for (auto& th : pool) th.join();
+    runOnThreads(threadsFor(options.threads, total), worker);
     if (failure) std::rethrow_exception(failure);
     return results;
 }

@@ -35,7 +35,7 @@ std::optional<assess::AssessmentOptions> readOptions(int argc, const char* const
         ("bootstrap", po::value<int>()->default_value(2000), "bootstrap replicates of the PF50 interval")
         ("confidence", po::value<double>()->default_value(0.95, "0.95"), "confidence level of the interval")
         ("threads", po::value<int>()->default_value(0), "worker threads (0: all cores); results do not depend on it")
-        ("out", po::value<std::string>(), "output directory: results.json, report/, and the campaign's runs (must be new or empty)")
+        ("out", po::value<std::string>(), "output directory: results.json, report/, and campaign.sqlite, every run and forest of the campaign (tables that R, Python and sqlite3 read; docs/assessment.md); must be new or empty")
         ("resume", po::bool_switch(), "continue the campaign in --out: run only what is missing (same options required)");
     po::variables_map vm;
     if (!parse(argc, argv, o, vm,

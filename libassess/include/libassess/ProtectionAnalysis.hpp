@@ -2,7 +2,7 @@
 // What an assessment concludes from its stored runs: for every stand and structure the pooled Dist50
 // and PF50 (Eq. 26) with a bootstrap interval, PF50 of each realisation alone, the stands' ranks by
 // PF50 and by basal area (Fig. 11), and the correlation of PF50 with G, Mean_D and N (Fig. 12).
-// Everything is computed from the run logs, in run order, so a resumed campaign gives exactly the
+// Everything is computed from the stored runs, in run order, so a resumed campaign gives exactly the
 // numbers of an uninterrupted one.
 #include <string>
 #include <vector>

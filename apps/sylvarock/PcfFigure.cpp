@@ -11,14 +11,13 @@
 
 namespace sylva::cli {
 
-namespace {
-std::string cell(double v) {
-    if (!std::isfinite(v)) return "NA";
+std::string csvNumber(double v) {
+    if (std::isnan(v)) return "NA";
+    if (std::isinf(v)) return v > 0 ? "Inf" : "-Inf";
     char buf[32];
-    std::snprintf(buf, sizeof buf, "%.8g", v);
+    std::snprintf(buf, sizeof buf, "%.10g", v);
     return buf;
 }
-}  // namespace
 
 void requirePlotDir(const std::string& dir) {
     std::error_code ec;
@@ -34,9 +33,9 @@ void drawPcfFigure(const std::string& dir, const std::string& stem, const std::s
     for (std::size_t f = 0; f < forests.size(); ++f) table << ",forest" << f + 1 << "_g_trans";
     table << "\n";
     for (std::size_t i = 1; i < g.r.size(); ++i) {  // g is undefined at r = 0
-        table << cell(g.r[i]) << "," << cell(g.trans[i]) << "," << cell(g.iso[i]);
-        if (envelope) table << "," << cell(envelope->transLow.at(i)) << "," << cell(envelope->transHigh.at(i));
-        for (const auto& f : forests) table << "," << cell(f.g.trans.at(i));
+        table << csvNumber(g.r[i]) << "," << csvNumber(g.trans[i]) << "," << csvNumber(g.iso[i]);
+        if (envelope) table << "," << csvNumber(envelope->transLow.at(i)) << "," << csvNumber(envelope->transHigh.at(i));
+        for (const auto& f : forests) table << "," << csvNumber(f.g.trans.at(i));
         table << "\n";
     }
     const std::string csv = dir + "/" + stem + ".csv";

@@ -21,6 +21,9 @@ struct NamedPairCorrelation {
 void drawPcfFigure(const std::string& dir, const std::string& stem, const std::string& title, const stand::PairCorrelation& stand,
                    const stand::PairCorrelationEnvelope* envelope, const std::vector<NamedPairCorrelation>& forests = {});
 
+// A number as R reads it from a CSV: %.10g, NA for NaN, Inf and -Inf.
+std::string csvNumber(double v);
+
 // Creates DIR (and its parents); InputError if it cannot, instead of gnuplot printing the SVG on the terminal.
 void requirePlotDir(const std::string& dir);
 

@@ -9,8 +9,9 @@
 #include "Cli.hpp"
 #include "Gnuplot.hpp"
 #include "PcfFigure.hpp"
-#include "libstand/ForestGenerator.hpp"
+#include "libassess/CampaignPlan.hpp"
 #include "libcommon/InputError.hpp"
+#include "libstand/ForestGenerator.hpp"
 #include "libstand/Inventory.hpp"
 #include "libstand/PairCorrelation.hpp"
 #include "libstand/PairCorrelationEnvelope.hpp"
@@ -122,7 +123,7 @@ int runGenerate(int argc, const char* const* argv) {
     }
     if (vm.count("plot-dir"))
         drawForestFigures(vm["plot-dir"].as<std::string>(), inventory, extent, drawn,
-                          settings.structure == stand::ForestStructure::Aggregated ? "A" : "NA");
+                          assess::structureCode(settings.structure));
     return 0;
 }
 

@@ -1,13 +1,9 @@
 // sylvarock stats: dendrometric and spatial statistics of an inventory or a point pattern
 // (docs/stand.md): N, G, DBH, coppice stools, Clark-Evans index and pair correlation g(r).
 #include <algorithm>
-#include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <limits>
-#include <map>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -77,14 +73,6 @@ StandPcf standPairCorrelation(const stand::Inventory& inv, const po::variables_m
     if (vm.count("pcf-exact")) s.options.kernelSum = stand::KernelSum::Exact;
     s.g = stand::pooledPairCorrelation(s.plots, s.rmax, s.nr, s.options);
     return s;
-}
-
-std::string csvNumber(double v) {
-    if (std::isnan(v)) return "NA";
-    if (std::isinf(v)) return v > 0 ? "Inf" : "-Inf";
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.10g", v);
-    return buf;
 }
 
 void writePcfCsv(const std::string& path, const stand::PairCorrelation& g) {

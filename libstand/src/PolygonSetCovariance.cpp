@@ -14,18 +14,12 @@ using Vec = Eigen::Vector2d;
 // A fixed direction with no rational slope, so it is parallel to no edge of real data.
 const Vec kGeneric(0.7548776662466927, 0.5698402909980532);
 
-double segmentDistance(const Vec& p, const Vec& a, const Vec& b) {
-    const Vec d = b - a;
-    const double t = std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
-    return (a + t * d - p).norm();
-}
-
 // Sign of value, or of its derivative in ε where the value is exactly zero.
 bool positive(double value, double derivative) { return value != 0 ? value > 0 : derivative > 0; }
 
 }  // namespace
 
-PolygonSetCovariance::PolygonSetCovariance(const Window& window) : corner_(window.lower()), area_(window.area()) {
+PolygonSetCovariance::PolygonSetCovariance(const Window& window) : window_(window), corner_(window.lower()), area_(window.area()) {
     const Vec size = window.upper() - window.lower();
     const double extent = std::max(size.x(), size.y());
     tolerance_ = 1e-9 * extent;
@@ -109,15 +103,9 @@ void PolygonSetCovariance::forEdgesNear(const Vec& p, const Vec& q, F&& f) const
 }
 
 bool PolygonSetCovariance::inside(const Vec& p, bool& clear) const {
-    bool in = false;
-    clear = true;
-    for (const Edge& e : edges_) {
-        if (segmentDistance(p, e.a, e.b) < tolerance_) clear = false;
-        if ((e.a.y() > p.y()) != (e.b.y() > p.y()) &&
-            p.x() < (e.b.x() - e.a.x()) * (p.y() - e.a.y()) / (e.b.y() - e.a.y()) + e.a.x())
-            in = !in;
-    }
-    return in;
+    const Vec at = p + corner_;  // back from W's frame
+    clear = window_.distanceToBoundary(at) >= tolerance_;
+    return window_.contains(at);
 }
 
 // ½∮ over the parts of one edge inside, given whether its start is inside; returns whether its end is.

@@ -37,14 +37,15 @@ private:
     bool edgeInside(const Edge& edge, const Eigen::Vector2d& shift, const Eigen::Vector2d& origin, const Eigen::Vector2d& moving,
                     bool in, double& sum) const;
     bool nearEdges(const Eigen::AlignedBox2d& box) const;  // whether the box meets a cell holding an edge
-    // Whether p is in W, by the crossing number; false with `clear` false if p is within `tolerance_`
-    // of the boundary (where the answer would depend on rounding).
+    // Whether p (in W's frame) is in W; `clear` false if p is within `tolerance_` of the boundary,
+    // where the answer would depend on rounding.
     bool inside(const Eigen::Vector2d& p, bool& clear) const;
     template <class F>
     void forCellsAlong(const Eigen::Vector2d& p, const Eigen::Vector2d& q, F&& f) const;
     template <class F>
     void forEdgesNear(const Eigen::Vector2d& p, const Eigen::Vector2d& q, F&& f) const;
 
+    Window window_;
     std::vector<Edge> edges_;              // in W's frame: its lower corner at the origin
     std::vector<std::size_t> ringStarts_;  // index of each ring's first edge, and the end
     Eigen::Vector2d corner_;               // W's lower corner

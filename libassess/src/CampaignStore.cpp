@@ -95,7 +95,9 @@ CampaignStore::CampaignStore(std::string dir, const AssessmentDesign& design, co
 }
 
 CampaignStore::~CampaignStore() {
-    db_.reset();                      // closes the database (checkpointing its log) before the lock goes
+    insertRun_.reset();  // statements are finalised before their database closes
+    insertForest_.reset();
+    db_.reset();         // closes the database (checkpointing its log) before the lock goes
     if (lock_ >= 0) ::close(lock_);  // releases the lock
 }
 
@@ -236,11 +238,17 @@ std::vector<int> CampaignStore::missingRuns(std::size_t campaign) const {
     return missing;
 }
 
-namespace {
-void insertForest(SqliteDatabase& db, const std::string& campaign, const ForestSummary& s) {
-    db.prepare(
-          "INSERT OR REPLACE INTO forests (campaign, stems, stems_per_ha, basal_area_m2_ha, mean_dbh_cm, sd_dbh_cm, clark_evans, "
-          "checksum) VALUES (?, ?, ?, ?, ?, ?, ?, ?)")
+// Prepared once per store, on first use (the tables exist by then), and kept: a campaign stores
+// thousands of runs.
+SqliteStatement& CampaignStore::statement(std::unique_ptr<SqliteStatement>& slot, const char* sql) {
+    if (!slot) slot = std::make_unique<SqliteStatement>(db_->prepare(sql));
+    return *slot;
+}
+
+void CampaignStore::insertForest(const std::string& campaign, const ForestSummary& s) {
+    statement(insertForest_,
+              "INSERT OR REPLACE INTO forests (campaign, stems, stems_per_ha, basal_area_m2_ha, mean_dbh_cm, sd_dbh_cm, clark_evans, "
+              "checksum) VALUES (?, ?, ?, ?, ?, ?, ?, ?)")
         .bind(1, campaign)
         .bind(2, static_cast<std::int64_t>(s.stems))
         .bind(3, s.stemsPerHa)
@@ -251,15 +259,14 @@ void insertForest(SqliteDatabase& db, const std::string& campaign, const ForestS
         .bind(8, forestChecksum(s))
         .run();
 }
-}  // namespace
 
 void CampaignStore::save(std::size_t campaign, const RunRecord& r, const ForestSummary* forest) {
     const std::string& id = plan_.at(campaign).id;
     SqliteTransaction transaction(*db_);
-    if (forest) insertForest(*db_, id, *forest);
-    db_->prepare(
-           "INSERT INTO runs (campaign, run, seed, runout_m, runout_horizontal_m, stop_x_m, stop_y_m, stop_z_m, energy_line_deg, "
-           "max_speed_m_s, tree_impacts, reason, checksum) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)")
+    if (forest) insertForest(id, *forest);
+    statement(insertRun_,
+              "INSERT INTO runs (campaign, run, seed, runout_m, runout_horizontal_m, stop_x_m, stop_y_m, stop_z_m, energy_line_deg, "
+              "max_speed_m_s, tree_impacts, reason, checksum) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)")
         .bind(1, id)
         .bind(2, static_cast<std::int64_t>(r.run))
         .bind(3, static_cast<std::int64_t>(r.seed))
@@ -281,7 +288,7 @@ void CampaignStore::save(std::size_t campaign, const RunRecord& r, const ForestS
 
 void CampaignStore::saveForest(std::size_t campaign, const ForestSummary& forest) {
     SqliteTransaction transaction(*db_);
-    insertForest(*db_, plan_.at(campaign).id, forest);
+    insertForest(plan_.at(campaign).id, forest);
     transaction.commit();
     forests_[campaign] = forest;
 }

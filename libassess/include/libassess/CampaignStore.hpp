@@ -21,6 +21,7 @@
 namespace sylva::assess {
 
 class SqliteDatabase;
+class SqliteStatement;
 
 class CampaignStore {
 public:
@@ -62,11 +63,14 @@ private:
     void checkStored(const AssessmentDesign& design);
     void loadRuns();
     void loadForests();
+    SqliteStatement& statement(std::unique_ptr<SqliteStatement>& slot, const char* sql);
+    void insertForest(const std::string& campaign, const ForestSummary& summary);
     std::string dir_;
     int lock_ = -1;  // the folder's file descriptor, holding its lock
     bool resumed_ = false;
     std::vector<Campaign> plan_;
     std::unique_ptr<SqliteDatabase> db_;
+    std::unique_ptr<SqliteStatement> insertRun_, insertForest_;  // after db_: destroyed before it
     std::vector<std::map<int, RunRecord>> runs_;           // in plan order
     std::vector<std::optional<ForestSummary>> forests_;  // in plan order
     std::vector<std::string> notes_;

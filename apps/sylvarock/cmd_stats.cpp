@@ -136,7 +136,9 @@ int runStats(int argc, const char* const* argv) {
     const stand::StandStatistics stats = stand::standStatistics(inv);
 
     std::optional<stand::PcfReport> pcfReport;
-    if (vm["envelope"].as<int>() < 0) throw InputError("--envelope: a number of simulations, >= 0");
+    if (vm["envelope"].as<int>() < 0 || vm["envelope"].as<int>() > 9999)
+        throw InputError("--envelope " + std::to_string(vm["envelope"].as<int>()) +
+                         ": a number of simulations from 0 (none) to 9999 (39 gives spatstat's pointwise 5 % test)");
     if (vm.count("pcf-out") || vm.count("plot-dir")) {
         const StandPcf pcf = standPairCorrelation(inv, vm);
         if (vm.count("pcf-out")) {

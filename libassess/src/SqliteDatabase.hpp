@@ -23,7 +23,6 @@ public:
     SqliteDatabase(const SqliteDatabase&) = delete;
     SqliteDatabase& operator=(const SqliteDatabase&) = delete;
 
-    const std::string& path() const { return path_; }
     void execute(const std::string& sql);  // one or more statements without results
     SqliteStatement prepare(const std::string& sql);
     [[noreturn]] void fail(const std::string& what) const;  // InputError with SQLite's last message
@@ -48,12 +47,12 @@ public:
     bool step();
     void run();  // a statement without results
 
-    bool isNull(int column) const;
     double real(int column) const;  // NULL reads back as NaN
     std::int64_t integer(int column) const;
     std::string text(int column) const;
 
 private:
+    bool isNull(int column) const;
     SqliteDatabase* db_;
     sqlite3_stmt* statement_;
 };

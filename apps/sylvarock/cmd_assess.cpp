@@ -14,6 +14,7 @@
 #include "libassess/MpiWorld.hpp"
 #include "libassess/Report.hpp"
 #include "libcommon/InputError.hpp"
+#include "libdem/Campaign.hpp"
 
 namespace sylva::cli {
 namespace {
@@ -31,6 +32,9 @@ std::optional<assess::AssessmentOptions> readOptions(int argc, const char* const
         ("runs", po::value<int>()->default_value(100), "M: block runs per forest realisation")
         ("realisations", po::value<int>()->default_value(5), "K: virtual forests per stand and structure (A and NA)")
         ("baseline-runs", po::value<int>()->default_value(1000), "B: block runs without forest")
+        ("model", po::value<std::string>()->default_value("dem"), "dem (the paper's discrete element model) | lumped (its lumped-mass model, docs/lumped.md) | both (the two through the same forests, side by side as the paper's Sect. 3)")
+        ("lumped-runs", po::value<int>()->default_value(2000), "lumped-mass model: block runs per forest realisation (a run costs ~0.1 ms)")
+        ("lumped-baseline-runs", po::value<int>()->default_value(3000), "lumped-mass model: block runs without forest (the paper's 3 000, Table 1)")
         ("seed", po::value<Seed>()->default_value(Seed{}, "1"), "seed; forests, runs and bootstrap seeds derive from it")
         ("bootstrap", po::value<int>()->default_value(2000), "bootstrap replicates of the PF50 interval")
         ("confidence", po::value<double>()->default_value(0.95, "0.95"), "confidence level of the interval")
@@ -40,10 +44,12 @@ std::optional<assess::AssessmentOptions> readOptions(int argc, const char* const
     po::variables_map vm;
     if (!parse(argc, argv, o, vm,
                "sylvarock assess --stand PREFIX [--stand PREFIX ...] --scene FILE.ini [--set KEY=VALUE ...] --out DIR [--runs M] "
-               "[--realisations K] [--baseline-runs B] [--seed S] [--resume]",
+               "[--realisations K] [--baseline-runs B] [--model dem|lumped|both] [--seed S] [--resume]",
                "  sylvarock assess --stand data/stands/GR1 --stand data/stands/PY1 --scene data/scenes/no-forest.ini \\\n"
                "      --runs 100 --realisations 5 --baseline-runs 1000 --seed 4 --out out/assess\n"
                "  (after an interruption, the same command with --resume finishes it)\n"
+               "  sylvarock assess --stand data/stands/GR1 --stand data/stands/PY1 --scene data/scenes/no-forest.ini \\\n"
+               "      --model both --out out/both     (the DEM and the lumped-mass model side by side: out/both/report/report.md)\n"
                "  mpirun -np 8 sylvarock assess ... --threads 1   (8 MPI ranks, same results; docs/cluster.md)\n"))
         return std::nullopt;
     if (stands.empty()) throw InputError("--stand PREFIX is required (e.g. data/stands/GR1)");
@@ -60,6 +66,9 @@ std::optional<assess::AssessmentOptions> readOptions(int argc, const char* const
     a.design.realisations = vm["realisations"].as<int>();
     a.design.baselineRuns = vm["baseline-runs"].as<int>();
     a.design.seed = vm["seed"].as<Seed>().value;
+    a.design.models = assess::parseModels(vm["model"].as<std::string>());
+    a.design.lumpedRuns = vm["lumped-runs"].as<int>();
+    a.design.lumpedBaselineRuns = vm["lumped-baseline-runs"].as<int>();
     a.outDir = vm["out"].as<std::string>();
     a.resume = vm["resume"].as<bool>();
     a.threads = threadCount(vm);
@@ -83,21 +92,25 @@ int runAssess(int argc, const char* const* argv) {
     a.onRunDone = [&progress](const std::string& campaign, int done, int total) { progress.update(done, total, campaign); };
 
     const auto t0 = std::chrono::steady_clock::now();
-    const assess::AssessmentResults results = assess::runAssessment(a);
+    const std::vector<assess::AssessmentResults> results = assess::runAssessment(a);
     assess::writeResultsJson(a.outDir + "/results.json", results);
     const assess::FigureSet figures = assess::writeReport(a.outDir + "/report", results);
     if (!figures.warning.empty()) std::cerr << "sylvarock assess: warning: " << figures.warning << "\n";
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-    std::printf("no forest: Dist50 %.1f m (%zu runs)\n", results.baselineDist50, results.baseline.size());
-    for (const auto& r : results.stands)
-        std::printf("%-8s %-2s PF50 %.3f [%.3f, %.3f]  Dist50 %.1f m  rank %d  (G %.1f m2/ha)\n", r.name.c_str(),
-                    assess::structureCode(r.structure).c_str(), r.pf50, r.pf50Ci.low, r.pf50Ci.high, r.dist50, r.rankPf50,
-                    r.inventory.basalAreaM2Ha);
+    std::size_t failed = 0;
+    for (const auto& model : results) {
+        const std::string name = results.size() > 1 ? dem::toString(model.model) + ": " : "";
+        std::printf("%sno forest: Dist50 %.1f m (%zu runs)\n", name.c_str(), model.baselineDist50, model.baseline.size());
+        for (const auto& r : model.stands)
+            std::printf("%s%-8s %-2s PF50 %.3f [%.3f, %.3f]  Dist50 %.1f m  rank %d  (G %.1f m2/ha)\n", name.c_str(), r.name.c_str(),
+                        assess::structureCode(r.structure).c_str(), r.pf50, r.pf50Ci.low, r.pf50Ci.high, r.dist50, r.rankPf50,
+                        r.inventory.basalAreaM2Ha);
+        failed += model.failedRuns.size();
+    }
     std::printf("results in %s/results.json, report in %s/report/report.md (%.1f s)\n", a.outDir.c_str(), a.outDir.c_str(), wall);
-    if (!results.failedRuns.empty()) {
-        std::cerr << "sylvarock assess: " << results.failedRuns.size()
-                  << " run(s) stopped on a numerical error and are left out (results.json failed_runs)\n";
+    if (failed) {
+        std::cerr << "sylvarock assess: " << failed << " run(s) stopped on a numerical error and are left out (results.json failed_runs)\n";
         return kRunsFailed;
     }
     return 0;

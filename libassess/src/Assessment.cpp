@@ -52,7 +52,7 @@ Inputs readInputs(const AssessmentOptions& options, const std::function<void(con
 
 }  // namespace
 
-AssessmentResults runAssessment(const AssessmentOptions& options) {
+std::vector<AssessmentResults> runAssessment(const AssessmentOptions& options) {
     const auto note = [&](const std::string& text) {
         if (options.onNote) options.onNote(text);
     };
@@ -86,14 +86,18 @@ AssessmentResults runAssessment(const AssessmentOptions& options) {
     BootstrapSettings bootstrap;
     bootstrap.replicates = options.bootstrapReplicates;
     bootstrap.confidence = options.confidence;
-    AssessmentResults results = analyse(options.design, plan, store, in.inventories, bootstrap);
-    const auto& soil = in.bareScene->soil();
-    results.terrainXmin = soil.xmin();
-    results.terrainXmax = soil.xmax();
-    results.terrainYmin = soil.ymin();
-    results.terrainYmax = soil.ymax();
-    results.forestStartX = forestExtent(*in.bareScene).lower().x();
-    return results;
+    std::vector<AssessmentResults> all;
+    for (auto model : options.design.models) {
+        AssessmentResults results = analyse(options.design, model, plan, store, in.inventories, bootstrap);
+        const auto& soil = in.bareScene->soil();
+        results.terrainXmin = soil.xmin();
+        results.terrainXmax = soil.xmax();
+        results.terrainYmin = soil.ymin();
+        results.terrainYmax = soil.ymax();
+        results.forestStartX = forestExtent(*in.bareScene).lower().x();
+        all.push_back(std::move(results));
+    }
+    return all;
 }
 
 void serveAssessment(const AssessmentOptions& options) {

@@ -41,6 +41,21 @@ StandSource standFromPrefix(const std::string& prefix) {
     return s;
 }
 
+int runsPerRealisation(const AssessmentDesign& design, dem::Model model) {
+    return model == dem::Model::Dem ? design.runs : design.lumpedRuns;
+}
+
+int baselineRuns(const AssessmentDesign& design, dem::Model model) {
+    return model == dem::Model::Dem ? design.baselineRuns : design.lumpedBaselineRuns;
+}
+
+std::vector<dem::Model> parseModels(const std::string& name) {
+    if (name == "both") return {dem::Model::Dem, dem::Model::Lumped};
+    if (name == "dem" || name == "lumped") return {dem::parseModel(name)};
+    throw InputError("--model '" + name + "': expected dem (the discrete element model), lumped (the lumped-mass model, "
+                     "docs/lumped.md) or both (the two side by side, as the paper's Sect. 3)");
+}
+
 void validate(const AssessmentDesign& d) {
     if (d.stands.empty()) throw InputError("no stand to assess: give at least one --stand PREFIX");
     std::set<std::string> names;
@@ -49,13 +64,23 @@ void validate(const AssessmentDesign& d) {
     if (d.runs < 1) throw InputError("--runs must be at least 1, got " + std::to_string(d.runs));
     if (d.realisations < 1) throw InputError("--realisations must be at least 1, got " + std::to_string(d.realisations));
     if (d.baselineRuns < 1) throw InputError("--baseline-runs must be at least 1, got " + std::to_string(d.baselineRuns));
+    if (d.models.empty()) throw InputError("no model to run: --model dem, lumped or both");
+    if (d.models.size() == 2 && d.models[0] == d.models[1]) throw InputError("model '" + dem::toString(d.models[0]) + "' is given twice");
+    if (d.lumpedRuns < 1) throw InputError("--lumped-runs must be at least 1, got " + std::to_string(d.lumpedRuns));
+    if (d.lumpedBaselineRuns < 1)
+        throw InputError("--lumped-baseline-runs must be at least 1, got " + std::to_string(d.lumpedBaselineRuns));
 }
 
 std::string designText(const AssessmentDesign& d) {
     std::ostringstream out;
     out << "# sylvarock assess: the design of the campaign in this directory (checked by --resume)\n"
-        << "format = 1\nseed = " << d.seed << "\nruns_per_realisation = " << d.runs << "\nrealisations = " << d.realisations
+        << "format = 2\nseed = " << d.seed << "\nruns_per_realisation = " << d.runs << "\nrealisations = " << d.realisations
         << "\nbaseline_runs = " << d.baselineRuns << "\n";
+    for (auto model : d.models) {
+        out << "model = " << dem::toString(model) << "\n";
+        if (model == dem::Model::Lumped)
+            out << "lumped_runs_per_realisation = " << d.lumpedRuns << "\nlumped_baseline_runs = " << d.lumpedBaselineRuns << "\n";
+    }
     const dem::SceneConfig scene = dem::loadScene(d.sceneFile, d.sceneOverrides);
     out << fileLine("scene", d.sceneFile);
     for (const auto& o : d.sceneOverrides) out << "scene_set = " << o << "\n";

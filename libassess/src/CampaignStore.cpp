@@ -26,7 +26,7 @@ namespace {
 const char* const kSchema = R"(
 CREATE TABLE design (line INTEGER PRIMARY KEY, text TEXT NOT NULL);
 CREATE TABLE campaigns (
-  id TEXT PRIMARY KEY, position INTEGER NOT NULL UNIQUE, stand TEXT, structure TEXT, realisation INTEGER,
+  id TEXT PRIMARY KEY, position INTEGER NOT NULL UNIQUE, model TEXT NOT NULL, stand TEXT, structure TEXT, realisation INTEGER,
   runs INTEGER NOT NULL, run_seed INTEGER NOT NULL, forest_seed INTEGER);
 CREATE TABLE runs (
   campaign TEXT NOT NULL REFERENCES campaigns(id), run INTEGER NOT NULL, seed INTEGER NOT NULL,
@@ -128,17 +128,18 @@ void CampaignStore::create(const AssessmentDesign& design) {
     std::string row;
     for (std::int64_t n = 1; std::getline(text, row); ++n) line.bind(1, n).bind(2, row).run();
     auto campaign = db_->prepare(
-        "INSERT INTO campaigns (id, position, stand, structure, realisation, runs, run_seed, forest_seed) VALUES (?, ?, ?, ?, ?, ?, ?, ?)");
+        "INSERT INTO campaigns (id, position, model, stand, structure, realisation, runs, run_seed, forest_seed) "
+        "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)");
     for (std::size_t c = 0; c < plan_.size(); ++c) {
         const Campaign& p = plan_[c];
-        campaign.bind(1, p.id).bind(2, static_cast<std::int64_t>(c));
-        campaign.bind(3, p.forested ? design.stands.at(p.stand).name : std::string()).bind(4, structureOf(p));
-        campaign.bind(5, static_cast<std::int64_t>(p.realisation)).bind(6, static_cast<std::int64_t>(p.runs));
-        campaign.bind(7, static_cast<std::int64_t>(p.runSeed));
+        campaign.bind(1, p.id).bind(2, static_cast<std::int64_t>(c)).bind(3, dem::toString(p.model));
+        campaign.bind(4, p.forested ? design.stands.at(p.stand).name : std::string()).bind(5, structureOf(p));
+        campaign.bind(6, static_cast<std::int64_t>(p.realisation)).bind(7, static_cast<std::int64_t>(p.runs));
+        campaign.bind(8, static_cast<std::int64_t>(p.runSeed));
         if (p.forested)
-            campaign.bind(8, static_cast<std::int64_t>(p.forestSeed));
+            campaign.bind(9, static_cast<std::int64_t>(p.forestSeed));
         else
-            campaign.bindNull(8);
+            campaign.bindNull(9);
         campaign.run();
     }
     transaction.commit();

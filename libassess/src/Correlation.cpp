@@ -1,5 +1,7 @@
 #include "libassess/Correlation.hpp"
 
+#include <gsl/gsl_cdf.h>
+
 #include <cmath>
 #include <stdexcept>
 
@@ -24,6 +26,14 @@ double pearson(const std::vector<double>& x, const std::vector<double>& y) {
     }
     if (sxx <= 0 || syy <= 0) return std::nan("");
     return sxy / std::sqrt(sxx * syy);
+}
+
+double pearsonPValue(double r, std::size_t n) {
+    if (!std::isfinite(r) || n < 3) return std::nan("");
+    if (std::fabs(r) >= 1) return 0;
+    const double dof = static_cast<double>(n) - 2;
+    const double t = std::fabs(r) * std::sqrt(dof / (1 - r * r));
+    return 2 * gsl_cdf_tdist_Q(t, dof);
 }
 
 std::vector<int> ascendingRanks(const std::vector<double>& values) {

@@ -142,17 +142,14 @@ std::string script(const AssessmentResults& results) {
     return gp.str();
 }
 
-}  // namespace
-
-FigureSet drawFigures(const std::string& reportDir, const AssessmentResults& results) {
-    writeData(reportDir, results);
+// Writes `script` as figures.gp into reportDir and runs gnuplot there; `svgs` are the files it draws.
+FigureSet runGnuplot(const std::string& reportDir, const std::string& script, const std::vector<std::string>& svgs) {
     {
         std::ofstream gp(reportDir + "/figures.gp", std::ios::trunc);
-        gp << script(results);
+        gp << script;
         if (!gp.flush()) throw InputError(reportDir + "/figures.gp", 0, "cannot write");
     }
     FigureSet set;
-    const std::vector<std::string> svgs{"runout_cdf.svg", "pf50.svg", "pf50_dendrometry.svg", "stop_map.svg"};
     for (const auto& f : svgs) fs::remove(reportDir + "/" + f);
     // gnuplot's messages go to our standard error; its exit status tells whether it ran.
     const int status = std::system(("cd " + shellQuoted(reportDir) + " && gnuplot figures.gp 1>&2").c_str());
@@ -161,6 +158,86 @@ FigureSet drawFigures(const std::string& reportDir, const AssessmentResults& res
     if (status != 0 || set.files.size() != svgs.size())
         set.warning = "gnuplot did not draw every figure (is gnuplot-nox installed?); the data and figures.gp are in " + reportDir;
     return set;
+}
+
+// The comparison's figures read each model's figure data, in <model>/data/ beside them.
+std::string comparisonScript(const std::vector<AssessmentResults>& results) {
+    const auto names = standNames(results.front());
+    const int n = static_cast<int>(names.size());
+    const int cols = std::min(n, 2), rows = (n + 1) / 2;
+    const auto dir = [](const AssessmentResults& r) { return dem::toString(r.model) + "/"; };
+    std::ostringstream gp;
+    gp << "# Figures comparing the models of sylvarock assess; run `gnuplot figures.gp` in this folder to redraw them.\n"
+       << "set datafile separator ','\nset grid\nset key bottom right\n"
+       << "A = '#c0392b'; NA = '#2471a3'; BASE = '#000000'\n\n";
+    // The first model drawn solid, the second dashed.
+    const auto style = [](std::size_t m) { return m == 0 ? std::string(" dt 1") : std::string(" dt 2"); };
+
+    gp << "# Figs. 9-10: cumulative run-out with and without forest, both models, one panel per stand\n"
+       << "set terminal svg size " << 560 * cols << ',' << 400 * rows << " dynamic noenhanced font 'sans,11'\n"
+       << "set output 'runout_cdf_models.svg'\nset multiplot layout " << rows << ',' << cols
+       << " title 'Cumulative run-out along the slope: " << dem::toString(results[0].model) << " solid, "
+       << dem::toString(results[1].model) << " dashed'\n"
+       << "set xlabel 'run-out along the slope (m)'\nset ylabel 'share of blocks stopped'\nset yrange [0:1]\n";
+    for (const auto& name : names) {
+        gp << "set title " << quoted(name) << "\nplot ";
+        for (std::size_t m = 0; m < results.size(); ++m) {
+            const std::string model = dem::toString(results[m].model);
+            gp << (m ? ", \\\n     " : "") << quoted(dir(results[m]) + "data/cdf_baseline.csv") << " every ::1 using 1:2 with steps lw 2"
+               << style(m) << " lc rgb BASE title " << quoted(model + " no forest");
+            for (const auto& row : results[m].stands)
+                if (row.name == name)
+                    gp << ", \\\n     " << quoted(dir(results[m]) + cdfFile(row)) << " every ::1 using 1:2 with steps lw 2" << style(m)
+                       << " lc rgb " << structureCode(row.structure) << " title " << quoted(model + " " + structureCode(row.structure));
+        }
+        gp << "\n";
+    }
+    gp << "unset multiplot\nset autoscale y\n\n";
+
+    gp << "# Fig. 11: PF50 per stand, both models, A and NA, with bootstrap intervals\n"
+       << "set terminal svg size " << std::max(600, 150 * n + 240) << ",440 dynamic noenhanced font 'sans,11'\nset output 'pf50_models.svg'\n"
+       << "set title 'PF50 per stand with " << static_cast<int>(std::lround(100 * results[0].bootstrap.confidence))
+       << " % bootstrap interval'\nset xlabel 'stand'\nset ylabel 'PF50'\nset xrange [-0.6:" << n - 0.4 << "]\nset key outside right\nplot ";
+    const double offsets[2][2] = {{-0.27, -0.09}, {0.09, 0.27}};
+    for (std::size_t m = 0; m < results.size(); ++m) {
+        const std::string model = dem::toString(results[m].model);
+        gp << (m ? ", \\\n     " : "") << quoted(dir(results[m]) + "data/pf50_A.csv") << " every ::1 using ($1" << std::showpos
+           << offsets[m][0] << std::noshowpos << "):3:4:5" << (m == 0 ? ":xtic(2)" : "") << " with yerrorbars pt " << (m ? 6 : 7)
+           << " lc rgb A title " << quoted(model + " A") << ", \\\n     " << quoted(dir(results[m]) + "data/pf50_NA.csv")
+           << " every ::1 using ($1" << std::showpos << offsets[m][1] << std::noshowpos << "):3:4:5 with yerrorbars pt " << (m ? 4 : 5)
+           << " lc rgb NA title " << quoted(model + " NA");
+    }
+    gp << "\nset autoscale x\nset xtics autofreq\nset key bottom right\n\n";
+
+    gp << "# Fig. 12: PF50 of both models against the inventory's basal area, mean diameter and stem density\n"
+       << "set terminal svg size 1300,420 dynamic noenhanced font 'sans,11'\nset output 'pf50_dendrometry_models.svg'\n"
+       << "set multiplot layout 1,3 title 'PF50 against the stands'' dendrometry (filled: " << dem::toString(results[0].model)
+       << ", open: " << dem::toString(results[1].model) << ")'\nunset title\nset ylabel 'PF50'\nset key top left\n";
+    const char* const axes[][2] = {{"6", "G (m²/ha)"}, {"7", "Mean D (cm)"}, {"8", "N (stems/ha)"}};
+    for (const auto& axis : axes) {
+        gp << "set xlabel '" << axis[1] << "'\nplot ";
+        for (std::size_t m = 0; m < results.size(); ++m) {
+            const std::string model = dem::toString(results[m].model);
+            gp << (m ? ", \\\n     " : "") << quoted(dir(results[m]) + "data/pf50_A.csv") << " every ::1 using " << axis[0]
+               << ":3 with points pt " << (m ? 6 : 7) << " lc rgb A title " << quoted(model + " A") << ", \\\n     "
+               << quoted(dir(results[m]) + "data/pf50_NA.csv") << " every ::1 using " << axis[0] << ":3 with points pt " << (m ? 4 : 5)
+               << " lc rgb NA title " << quoted(model + " NA");
+        }
+        gp << "\n";
+    }
+    gp << "unset multiplot\n";
+    return gp.str();
+}
+
+}  // namespace
+
+FigureSet drawFigures(const std::string& reportDir, const AssessmentResults& results) {
+    writeData(reportDir, results);
+    return runGnuplot(reportDir, script(results), {"runout_cdf.svg", "pf50.svg", "pf50_dendrometry.svg", "stop_map.svg"});
+}
+
+FigureSet drawModelComparisonFigures(const std::string& reportDir, const std::vector<AssessmentResults>& results) {
+    return runGnuplot(reportDir, comparisonScript(results), {"runout_cdf_models.svg", "pf50_models.svg", "pf50_dendrometry_models.svg"});
 }
 
 }  // namespace sylva::assess

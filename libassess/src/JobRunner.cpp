@@ -50,6 +50,7 @@ JobOutcome JobRunner::run(const CampaignJob& job) {
             if (job.summarise) outcome.forest = held->forest;
         }
         dem::CampaignOptions options;
+        options.model = campaign.model;
         options.only = {job.run};
         options.seed = campaign.runSeed;
         options.threads = 1;

@@ -51,20 +51,27 @@ void rankWithinStructures(std::vector<StructureAssessment>& rows, std::vector<De
             group[i]->rankPf50 = byPf[i];
             group[i]->rankBasalArea = byG[i];
         }
-        correlations.push_back({structure, group.size(), pearson(pf, g), pearson(pf, d), pearson(pf, n)});
+        DendrometricCorrelation c{structure, group.size(), pearson(pf, g), pearson(pf, d), pearson(pf, n)};
+        c.pBasalArea = pearsonPValue(c.basalArea, c.stands);
+        c.pMeanDbh = pearsonPValue(c.meanDbh, c.stands);
+        c.pStemsPerHa = pearsonPValue(c.stemsPerHa, c.stands);
+        correlations.push_back(c);
     }
 }
 
 }  // namespace
 
-AssessmentResults analyse(const AssessmentDesign& design, const std::vector<Campaign>& plan, const CampaignStore& store,
-                          const std::vector<ForestSummary>& inventories, const BootstrapSettings& bootstrap) {
+AssessmentResults analyse(const AssessmentDesign& design, dem::Model model, const std::vector<Campaign>& plan,
+                          const CampaignStore& store, const std::vector<ForestSummary>& inventories,
+                          const BootstrapSettings& bootstrap) {
     AssessmentResults out;
     out.design = design;
+    out.model = model;
     out.bootstrap = bootstrap;
     std::vector<double> baseline;
     for (std::size_t c = 0; c < plan.size(); ++c) {
         const Campaign& campaign = plan[c];
+        if (campaign.model != model) continue;
         std::vector<RunRecord> runs = completeRuns(store, c, campaign, out.failedRuns);
         if (!campaign.forested) {
             out.baseline = std::move(runs);
@@ -95,7 +102,7 @@ AssessmentResults analyse(const AssessmentDesign& design, const std::vector<Camp
         row.dist50 = dem::quantile(pooled, 0.5);
         row.pf50 = protectionIndex(row.dist50, out.baselineDist50);  // Eq. 26
         BootstrapSettings b = bootstrap;
-        b.seed = derivedSeed(design.seed, "bootstrap|" + row.name + "|" + structureCode(row.structure));
+        b.seed = derivedSeed(design.seed, seedKeyPrefix(model) + "bootstrap|" + row.name + "|" + structureCode(row.structure));
         row.pf50Ci = bootstrapProtectionIndex(perRealisation, baseline, b);
     }
     rankWithinStructures(out.stands, out.correlations);

@@ -8,8 +8,11 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <ostream>
+#include <stdexcept>
 
 #include "libassess/CampaignPlan.hpp"
+#include "libassess/ModelComparison.hpp"
 #include "libdem/CampaignSummary.hpp"
 #include "libcommon/InputError.hpp"
 
@@ -91,7 +94,7 @@ void writeTables(const std::string& dir, const AssessmentResults& res) {
               "virtual_sd_dbh_cm,virtual_clark_evans\n";
     for (const auto& r : res.stands)
         stands << r.name << ',' << structureCode(r.structure) << ',' << r.pf50 << ',' << r.pf50Ci.low << ',' << r.pf50Ci.high << ','
-               << r.dist50 << ',' << r.runs.size() << ',' << res.design.runs << ',' << r.rankPf50 << ',' << r.rankBasalArea << ','
+               << r.dist50 << ',' << r.runs.size() << ',' << runsPerRealisation(res.design, res.model) << ',' << r.rankPf50 << ',' << r.rankBasalArea << ','
                << r.inventory.stemsPerHa << ',' << r.inventory.basalAreaM2Ha << ',' << r.inventory.meanDbhCm << ','
                << r.inventory.sdDbhCm << ',' << r.inventory.clarkEvans << ','
                << forestMean(r, [](const ForestSummary& f) { return f.basalAreaM2Ha; }) << ','
@@ -110,9 +113,11 @@ void writeTables(const std::string& dir, const AssessmentResults& res) {
                     << dem::quantile(runout, 0.5) << ',' << r.pf50PerRealisation[k] << '\n';
         }
     auto corr = create(dir + "/correlations.csv");
-    corr << "structure,stands,pearson_pf50_basal_area,pearson_pf50_mean_dbh,pearson_pf50_stems_per_ha\n";
+    corr << "structure,stands,pearson_pf50_basal_area,pearson_pf50_mean_dbh,pearson_pf50_stems_per_ha,p_pf50_basal_area,p_pf50_mean_dbh,"
+            "p_pf50_stems_per_ha\n";
     for (const auto& c : res.correlations)
-        corr << structureCode(c.structure) << ',' << c.stands << ',' << c.basalArea << ',' << c.meanDbh << ',' << c.stemsPerHa << '\n';
+        corr << structureCode(c.structure) << ',' << c.stands << ',' << c.basalArea << ',' << c.meanDbh << ',' << c.stemsPerHa << ','
+             << c.pBasalArea << ',' << c.pMeanDbh << ',' << c.pStemsPerHa << '\n';
     auto runs = create(dir + "/runs.csv");
     runs << "stand,structure,realisation,run,seed,runout_m,runout_horizontal_m,stop_x_m,stop_y_m,tree_impacts,reason\n";
     const auto row = [&runs](const std::string& stand, const std::string& structure, std::size_t k, const RunRecord& r) {
@@ -125,12 +130,31 @@ void writeTables(const std::string& dir, const AssessmentResults& res) {
             for (const auto& r : s.runs[k]) row(s.name, structureCode(s.structure), k + 1, r);
 }
 
+std::string modelName(dem::Model model) {
+    return model == dem::Model::Dem ? "the discrete element model" : "the lumped-mass model";
+}
+
+// r and its p-value in one cell, the paper's significance level marked.
+std::string correlationCell(double r, double p) {
+    return fixed(r, 3) + " (p " + fixed(p, 3) + ")" + (p < 0.05 ? " *" : "");
+}
+
+void writeCorrelationTable(std::ostream& md, const std::vector<DendrometricCorrelation>& correlations) {
+    md << "Pearson's correlation of PF50 with the inventories' G, Mean_D and N, with its two-sided p-value (t test, "
+          "n − 2 degrees of freedom; * p < 0.05; undefined below three stands):\n\n"
+          "| structure | stands | r(PF50, G) | r(PF50, Mean_D) | r(PF50, N) |\n| --- | --- | --- | --- | --- |\n";
+    for (const auto& c : correlations)
+        md << "| " << structureCode(c.structure) << " | " << c.stands << " | " << correlationCell(c.basalArea, c.pBasalArea) << " | "
+           << correlationCell(c.meanDbh, c.pMeanDbh) << " | " << correlationCell(c.stemsPerHa, c.pStemsPerHa) << " |\n";
+}
+
 void writeMarkdown(const std::string& path, const AssessmentResults& res, const FigureSet& figures) {
     auto md = create(path);
     const auto& d = res.design;
-    md << "# Protection of the stands against rockfall (sylvarock assess)\n\n"
+    md << "# Protection of the stands against rockfall (sylvarock assess, " << modelName(res.model) << ")\n\n"
        << "Scene `" << d.sceneFile << "`" << setsText(d.sceneOverrides) << "; seed " << d.seed << "; per stand and structure " << d.realisations
-       << " virtual forest(s) of " << d.runs << " block runs each; " << d.baselineRuns << " runs without forest.\n\n"
+       << " virtual forest(s) of " << runsPerRealisation(d, res.model) << " block runs each; " << baselineRuns(d, res.model)
+       << " runs without forest.\n\n"
        << "PF50 = 1 − Dist50(with forest) / Dist50(without forest) (Toe et al., Eq. 26), Dist50 the median run-out "
        << "along the slope of the pooled runs. The interval is a " << percent(res.bootstrap.confidence)
        << " % percentile bootstrap (" << res.bootstrap.replicates
@@ -158,12 +182,8 @@ void writeMarkdown(const std::string& path, const AssessmentResults& res, const 
               "told apart by this campaign.\n\n";
     }
 
-    md << "## PF50 and dendrometry (Fig. 12)\n\nPearson's correlation of PF50 with the inventories' G, Mean_D and N "
-          "(undefined below two stands):\n\n| structure | stands | r(PF50, G) | r(PF50, Mean_D) | r(PF50, N) |\n"
-          "| --- | --- | --- | --- | --- |\n";
-    for (const auto& c : res.correlations)
-        md << "| " << structureCode(c.structure) << " | " << c.stands << " | " << fixed(c.basalArea, 3) << " | " << fixed(c.meanDbh, 3)
-           << " | " << fixed(c.stemsPerHa, 3) << " |\n";
+    md << "## PF50 and dendrometry (Fig. 12)\n\n";
+    writeCorrelationTable(md, res.correlations);
 
     md << "\n## Inventories and virtual forests (Table 3)\n\nVirtual forests: mean over the realisations.\n\n"
        << "| forest | Mean_D (cm) | Std_D (cm) | N (/ha) | G (m²/ha) | R_Clark |\n| --- | --- | --- | --- | --- | --- |\n";
@@ -205,23 +225,32 @@ void writeMarkdown(const std::string& path, const AssessmentResults& res, const 
           "figure data in `data/`, the gnuplot script `figures.gp`.\n";
 }
 
-}  // namespace
-
-void writeResultsJson(const std::string& path, const AssessmentResults& res) {
-    const auto& d = res.design;
-    Json root;
-    Json& design = root["design"];
+Json designJson(const AssessmentDesign& d, const BootstrapSettings& bootstrap) {
+    Json design;
     design["scene"] = d.sceneFile;
     design["scene_set"] = d.sceneOverrides;
     design["seed"] = d.seed;
     design["runs_per_realisation"] = d.runs;
     design["realisations"] = d.realisations;
     design["baseline_runs"] = d.baselineRuns;
-    design["bootstrap_replicates"] = res.bootstrap.replicates;
-    design["confidence"] = res.bootstrap.confidence;
+    design["models"] = Json::array();
+    for (auto model : d.models) design["models"].push_back(dem::toString(model));
+    if (std::count(d.models.begin(), d.models.end(), dem::Model::Lumped)) {
+        design["lumped_runs_per_realisation"] = d.lumpedRuns;
+        design["lumped_baseline_runs"] = d.lumpedBaselineRuns;
+    }
+    design["bootstrap_replicates"] = bootstrap.replicates;
+    design["confidence"] = bootstrap.confidence;
     design["stands"] = Json::array();
     for (const auto& s : d.stands) design["stands"].push_back(s.name);
+    return design;
+}
 
+// One model's results: the top level of results.json for the first model, an object named after the
+// model for the others.
+Json modelJson(const AssessmentResults& res) {
+    Json root;
+    root["model"] = dem::toString(res.model);
     std::vector<double> baselineRunouts;
     for (const auto& r : res.baseline) baselineRunouts.push_back(r.runoutM);
     Json& baseline = root["baseline"];
@@ -240,7 +269,7 @@ void writeResultsJson(const std::string& path, const AssessmentResults& res) {
         row["dist50_m"] = r.dist50;
         summaryFields(row, r.inventory);
         row["realisations"] = r.runs.size();
-        row["runs"] = d.runs;
+        row["runs"] = runsPerRealisation(res.design, res.model);
         row["runs_pooled"] = pooled(r).size();
         row["rank_pf50"] = r.rankPf50;
         row["rank_basal_area"] = r.rankBasalArea;
@@ -279,17 +308,116 @@ void writeResultsJson(const std::string& path, const AssessmentResults& res) {
                                         {"stands", c.stands},
                                         {"pearson_pf50_basal_area", c.basalArea},
                                         {"pearson_pf50_mean_dbh", c.meanDbh},
-                                        {"pearson_pf50_stems_per_ha", c.stemsPerHa}});
-    auto out = create(path);
-    out << root.dump(2) << '\n';
+                                        {"pearson_pf50_stems_per_ha", c.stemsPerHa},
+                                        {"p_pf50_basal_area", c.pBasalArea},
+                                        {"p_pf50_mean_dbh", c.pMeanDbh},
+                                        {"p_pf50_stems_per_ha", c.pStemsPerHa}});
+    return root;
 }
 
-FigureSet writeReport(const std::string& reportDir, const AssessmentResults& results) {
+Json comparisonJson(const ModelComparison& c) {
+    Json j;
+    j["models"] = {dem::toString(c.first->model), dem::toString(c.second->model)};
+    j["stands"] = Json::array();
+    for (const auto& s : c.stands)
+        j["stands"].push_back({{"name", s.name},
+                               {"structure", structureCode(s.structure)},
+                               {"pf50", {s.first->pf50, s.second->pf50}},
+                               {"rank_pf50", {s.first->rankPf50, s.second->rankPf50}},
+                               {"intervals_overlap", s.intervalsOverlap}});
+    j["rank_agreement"] = Json::array();
+    for (const auto& a : c.agreement)
+        j["rank_agreement"].push_back({{"structure", structureCode(a.structure)},
+                                       {"stands", a.stands},
+                                       {"spearman", a.rankCorrelation},
+                                       {"p", a.rankCorrelationP}});
+    j["stands_na_above_a"] = {c.naAboveA[0], c.naAboveA[1]};
+    j["stands_with_a_and_na"] = c.standsWithBoth;
+    return j;
+}
+
+FigureSet writeModelReport(const std::string& reportDir, const AssessmentResults& results) {
     fs::create_directories(reportDir);
     writeTables(reportDir, results);
     const FigureSet figures = drawFigures(reportDir, results);
     writeMarkdown(reportDir + "/report.md", results, figures);
     return figures;
+}
+
+std::string pf50Cell(const StructureAssessment& r) {
+    return fixed(r.pf50, 3) + " [" + fixed(r.pf50Ci.low, 3) + ", " + fixed(r.pf50Ci.high, 3) + "]";
+}
+
+void writeComparisonMarkdown(const std::string& path, const ModelComparison& c, const FigureSet& figures) {
+    auto md = create(path);
+    const AssessmentResults &a = *c.first, &b = *c.second;
+    const std::string na = dem::toString(a.model), nb = dem::toString(b.model);
+    const auto& d = a.design;
+    md << "# Protection of the stands against rockfall: the two models side by side (sylvarock assess)\n\n"
+       << "The paper's comparison (Toe et al., Sect. 3.2–3.3, Figs. 9–12): " << modelName(a.model) << " (`" << na << "`) and "
+       << modelName(b.model) << " (`" << nb << "`, docs/lumped.md) through the same virtual forests (" << d.realisations
+       << " per stand and structure) on scene `" << d.sceneFile << "`" << setsText(d.sceneOverrides) << ", seed " << d.seed << "; "
+       << runsPerRealisation(d, a.model) << " and " << runsPerRealisation(d, b.model) << " runs per forest, "
+       << baselineRuns(d, a.model) << " and " << baselineRuns(d, b.model) << " without forest. Each model's PF50 (Eqs. 26, 27) "
+       << "is measured against its own run-out without forest. Each model's full report: [" << na << "/report.md](" << na
+       << "/report.md), [" << nb << "/report.md](" << nb << "/report.md).\n\n"
+       << "Without forest: Dist50 " << fixed(a.baselineDist50, 1) << " m (" << na << "), " << fixed(b.baselineDist50, 1) << " m ("
+       << nb << ").\n\n"
+       << "## PF50 per stand (Fig. 11)\n\n| stand | structure | PF50 " << na << " [" << percent(a.bootstrap.confidence)
+       << " %] | PF50 " << nb << " | rank " << na << " | rank " << nb << " | intervals overlap |\n"
+       << "| --- | --- | --- | --- | --- | --- | --- |\n";
+    for (const auto& s : c.stands)
+        md << "| " << s.name << " | " << structureCode(s.structure) << " | " << pf50Cell(*s.first) << " | " << pf50Cell(*s.second) << " | "
+           << s.first->rankPf50 << " | " << s.second->rankPf50 << " | " << (s.intervalsOverlap ? "yes" : "**no**") << " |\n";
+    md << "\nWhere the intervals do not overlap, this campaign tells the two models apart for that stand.\n\n"
+       << "## Do the models order the stands alike?\n\nSpearman's rank correlation of the two models' PF50 over the stands "
+          "(p two-sided, exact over all pairings of the ranks up to 9 stands; * p < 0.05):\n\n| structure | stands | Spearman | p |\n| --- | --- | --- | --- |\n";
+    for (const auto& g : c.agreement)
+        md << "| " << structureCode(g.structure) << " | " << g.stands << " | " << fixed(g.rankCorrelation, 3) << " | "
+           << fixed(g.rankCorrelationP, 3) << (g.rankCorrelationP < 0.05 ? " *" : "") << " |\n";
+    md << "\n## Aggregation (A against NA)\n\nStands whose random forests (NA) protect more than their aggregated ones (A): "
+       << c.naAboveA[0] << " of " << c.standsWithBoth << " with " << na << ", " << c.naAboveA[1] << " of " << c.standsWithBoth
+       << " with " << nb << " (the paper found NA more protective with both models).\n\n"
+       << "## PF50 and dendrometry (Fig. 12)\n\nThe paper: with the DEM only G is significant; with RF3D G, N and Mean_D.\n\n### "
+       << na << "\n\n";
+    writeCorrelationTable(md, a.correlations);
+    md << "\n### " << nb << "\n\n";
+    writeCorrelationTable(md, b.correlations);
+    md << "\n## Figures\n\n";
+    const std::map<std::string, std::string> captions{
+        {"runout_cdf_models.svg", "Cumulative run-out of both models with and without forest, A and NA (Figs. 9–10)"},
+        {"pf50_models.svg", "PF50 per stand, both models, A and NA, with intervals (Fig. 11)"},
+        {"pf50_dendrometry_models.svg", "PF50 of both models against G, Mean_D and N (Fig. 12)"}};
+    for (const auto& f : figures.files) md << "![" << captions.at(f) << "](" << f << ")\n\n";
+    if (!figures.warning.empty()) md << "Figures missing: " << figures.warning << "\n\n";
+}
+
+}  // namespace
+
+void writeResultsJson(const std::string& path, const std::vector<AssessmentResults>& results) {
+    if (results.empty()) throw std::invalid_argument("writeResultsJson: no results");
+    Json root;
+    root["design"] = designJson(results.front().design, results.front().bootstrap);
+    root.update(modelJson(results.front()));
+    for (std::size_t m = 1; m < results.size(); ++m) root[dem::toString(results[m].model)] = modelJson(results[m]);
+    if (results.size() == 2) root["model_comparison"] = comparisonJson(compareModels(results[0], results[1]));
+    auto out = create(path);
+    out << root.dump(2) << '\n';
+}
+
+FigureSet writeReport(const std::string& reportDir, const std::vector<AssessmentResults>& results) {
+    if (results.size() == 1) return writeModelReport(reportDir, results.front());
+    if (results.size() != 2) throw std::invalid_argument("writeReport: one or two models");
+    FigureSet all;
+    for (const auto& r : results) {
+        const FigureSet one = writeModelReport(reportDir + "/" + dem::toString(r.model), r);
+        if (!one.warning.empty()) all.warning = one.warning;
+    }
+    const FigureSet figures = drawModelComparisonFigures(reportDir, results);
+    writeComparisonMarkdown(reportDir + "/report.md", compareModels(results[0], results[1]), figures);
+    all.files = figures.files;
+    if (!figures.warning.empty()) all.warning = figures.warning;
+    return all;
 }
 
 }  // namespace sylva::assess

@@ -96,6 +96,30 @@ TEST_F(AssessCli, SceneOverridesArePartOfTheDesign) {
     EXPECT_NE(err_.find("toe2017"), std::string::npos) << err_;
 }
 
+// --model both: each model's report in its own folder, the comparison on top, and each model's
+// results in results.json (the DEM's at the top level, as with --model dem).
+TEST_F(AssessCli, BothModelsReportSideBySide) {
+    ASSERT_EQ(run(smallCampaign("out", 2) + " --model both --lumped-runs 30 --lumped-baseline-runs 40"), 0) << err_;
+    const std::string json = slurp(root_ / "out/results.json");
+    for (const char* key : {"\"model\": \"dem\"", "\"lumped\": {", "\"model\": \"lumped\"", "\"model_comparison\": {",
+                            "\"lumped_runs_per_realisation\": 30", "\"p_pf50_basal_area\""})
+        EXPECT_NE(json.find(key), std::string::npos) << key;
+    const std::string report = slurp(root_ / "out/report/report.md");
+    EXPECT_NE(report.find("the two models side by side"), std::string::npos) << report;
+    EXPECT_NE(report.find("| GR1 | A |"), std::string::npos) << report;
+    for (const char* model : {"dem", "lumped"}) {
+        EXPECT_NE(slurp(root_ / "out/report" / model / "report.md").find("| GR1 |"), std::string::npos) << model;
+        EXPECT_TRUE(fs::exists(root_ / "out/report" / model / "runs.csv")) << model;
+    }
+    if (std::system("gnuplot --version > /dev/null 2>&1") == 0) {
+        for (const char* svg : {"runout_cdf_models.svg", "pf50_models.svg", "pf50_dendrometry_models.svg"})
+            EXPECT_TRUE(fs::exists(root_ / "out/report" / svg)) << svg;
+    }
+    // The models are part of the design: resuming with one of them only is refused.
+    EXPECT_EQ(run(smallCampaign("out", 2) + " --resume"), 2);
+    EXPECT_NE(err_.find("model = lumped"), std::string::npos) << err_;
+}
+
 TEST_F(AssessCli, BadInputsAreClearErrors) {
     EXPECT_EQ(run("--stand " + (root_ / "nowhere/XX1").string() + " --scene x.ini --out " + (root_ / "o").string()), 2);
     EXPECT_NE(err_.find("XX1_stems.csv does not exist"), std::string::npos) << err_;
@@ -105,6 +129,10 @@ TEST_F(AssessCli, BadInputsAreClearErrors) {
                   "/stands/GR1 --scene " + std::string(SYLVAROCK_DATA) + "/scenes/no-forest.ini --out " + (root_ / "o").string()),
               2);
     EXPECT_NE(err_.find("given twice"), std::string::npos) << err_;
+    EXPECT_EQ(run(smallCampaign("o") + " --model rf3d"), 2);
+    EXPECT_NE(err_.find("--model 'rf3d': expected dem"), std::string::npos) << err_;
+    EXPECT_EQ(run(smallCampaign("o") + " --model both --lumped-runs 0"), 2);
+    EXPECT_NE(err_.find("--lumped-runs must be at least 1"), std::string::npos) << err_;
     EXPECT_FALSE(fs::exists(root_ / "o"));  // nothing is written before the inputs are known to be good
 }
 

@@ -151,7 +151,7 @@ TEST_F(CampaignStoreFile, RefusesRunsThatAreNotThisCampaigns) {
         {"UPDATE runs SET run = 7 WHERE run = 1", "GR1_A_001 run 7 is outside this campaign's 5 runs"},
         {"UPDATE design SET text = 'seed = 98' WHERE text = 'seed = 99'", "design line"},
         {"DELETE FROM campaigns WHERE id = 'GR1_NA_001'", "lists 2 campaigns, the design 3"},
-        {"PRAGMA user_version = 2", "schema version 2"},
+        {"PRAGMA user_version = 1", "schema version 1"},
     };
     for (const auto& [sql, message] : cases) {
         fs::remove_all(dir_);

@@ -9,6 +9,7 @@ namespace {
 
 using sylva::assess::ascendingRanks;
 using sylva::assess::pearson;
+using sylva::assess::pearsonPValue;
 
 TEST(Correlation, AnscombesFirstSetHasThePublishedCoefficient) {
     // Anscombe (1973), data set I: r = 0.816 as published (3 decimals, hence the 5e-4 tolerance).
@@ -33,6 +34,18 @@ TEST(Correlation, UndefinedWithoutSpreadOrPairs) {
     EXPECT_TRUE(std::isnan(pearson({1.0}, {2.0})));
     EXPECT_TRUE(std::isnan(pearson({1, 2, 3}, {5, 5, 5})));
     EXPECT_THROW(pearson({1, 2}, {1, 2, 3}), std::invalid_argument);
+}
+
+// Student's t table: with 6 degrees of freedom the two-sided 5 % critical value is 2.446912 and the
+// 1 % one 3.707428 (Abramowitz & Stegun, Table 26.10, 6 digits: hence tolerances of 1e-5 on p).
+TEST(Correlation, PValueMatchesStudentsTable) {
+    const auto rFor = [](double t, double dof) { return t / std::sqrt(t * t + dof); };
+    EXPECT_NEAR(pearsonPValue(rFor(2.446912, 6), 8), 0.05, 1e-5);
+    EXPECT_NEAR(pearsonPValue(-rFor(3.707428, 6), 8), 0.01, 1e-5);
+    EXPECT_NEAR(pearsonPValue(0, 8), 1, 1e-12);
+    EXPECT_EQ(pearsonPValue(1, 5), 0);
+    EXPECT_TRUE(std::isnan(pearsonPValue(0.9, 2)));  // no degree of freedom left
+    EXPECT_TRUE(std::isnan(pearsonPValue(std::nan(""), 8)));
 }
 
 TEST(Correlation, RanksAscendWithTiesSharingTheLowest) {

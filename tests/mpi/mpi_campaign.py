@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """A campaign spread over MPI ranks gives, bit for bit, the one-process campaign's results.
 
-  mpi_campaign.py same     SYLVAROCK MPIRUN  assess: 3 ranks x 2 threads against 1 process x 1 thread
+  mpi_campaign.py same     SYLVAROCK MPIRUN  assess, both models: 3 ranks x 2 threads against 1 process x 1 thread
   mpi_campaign.py resume   SYLVAROCK MPIRUN  assess: a 3-rank job whose rank 1 is killed mid-campaign,
                                              resumed on 2 ranks, against 1 process
   mpi_campaign.py simulate SYLVAROCK MPIRUN  simulate: the lumped model through a forest (2 000 runs,
@@ -136,7 +136,7 @@ tmp = tempfile.mkdtemp(prefix="sylvarock-mpi-")
 try:
     one, many = os.path.join(tmp, "one"), os.path.join(tmp, "many")
     if mode == "same":
-        args = design(runs=6, baseline=60)
+        args = design(runs=6, baseline=60) + ["--model", "both", "--lumped-runs", "150", "--lumped-baseline-runs", "200"]
         run([exe] + args + ["--threads", "1", "--out", one])
         run(mpi(3) + args + ["--threads", "2", "--out", many])
         compare(one, many)

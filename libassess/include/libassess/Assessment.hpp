@@ -20,10 +20,11 @@ struct AssessmentOptions {
     std::function<void(const std::string& campaign, int done, int total)> onRunDone;
 };
 
-// InputError for unusable inputs (stands, scene, options, output directory, mismatched design on
-// resume) before any run starts. Under mpirun this is rank 0's part (it alone writes the output
-// directory and analyses); the other ranks call serveAssessment with the same options.
-AssessmentResults runAssessment(const AssessmentOptions& options);
+// One result per model of the design, in its order. InputError for unusable inputs (stands, scene,
+// options, output directory, mismatched design on resume) before any run starts. Under mpirun this
+// is rank 0's part (it alone writes the output directory and analyses); the other ranks call
+// serveAssessment with the same options.
+std::vector<AssessmentResults> runAssessment(const AssessmentOptions& options);
 // An MPI rank other than 0: reads the same inputs and runs the jobs rank 0 hands out. Throws
 // PeerFailed (MpiWorld.hpp) if rank 0 could not start the campaign.
 void serveAssessment(const AssessmentOptions& options);

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "libdem/Campaign.hpp"
+
 namespace sylva::assess {
 
 struct StandSource {
@@ -25,9 +27,22 @@ struct AssessmentDesign {
     int realisations = 5;      // K, forests generated per stand and structure
     int baselineRuns = 1000;   // B, runs without forest
     std::uint64_t seed = 1;
+    // The models that run the campaigns (the paper's Sect. 2.3: the DEM, and the lumped-mass model
+    // as its RF3D). Each runs through the same virtual forests; the lumped model, ~10^4 times faster,
+    // takes its own run counts.
+    std::vector<dem::Model> models{dem::Model::Dem};
+    int lumpedRuns = 2000;          // lumped runs per forest realisation
+    int lumpedBaselineRuns = 3000;  // lumped runs without forest (the paper's Table 1 calibration count)
 };
 
-// InputError for: no stand, two stands of one name, M, K or B below 1.
+// Block runs per forest realisation, and without forest, of one model.
+int runsPerRealisation(const AssessmentDesign& design, dem::Model model);
+int baselineRuns(const AssessmentDesign& design, dem::Model model);
+
+// "dem" | "lumped" | "both" (the --model option of assess); InputError otherwise.
+std::vector<dem::Model> parseModels(const std::string& name);
+
+// InputError for: no stand, two stands of one name, no model or one twice, any run count below 1.
 void validate(const AssessmentDesign& design);
 
 // The design as text, one `key = value` per line: the counts, the seed, the scene's overrides and

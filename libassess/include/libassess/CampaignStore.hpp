@@ -25,7 +25,7 @@ class SqliteStatement;
 
 class CampaignStore {
 public:
-    static constexpr int kSchemaVersion = 1;  // PRAGMA user_version of campaign.sqlite
+    static constexpr int kSchemaVersion = 2;  // PRAGMA user_version of campaign.sqlite (2: campaigns.model)
     static const char* const kFileName;       // "campaign.sqlite"
 
     // New campaign (resume false): `dir` must be absent or empty (else InputError: "use --resume or

@@ -19,5 +19,9 @@ struct FigureSet {
 // Writes data/ and figures.gp into reportDir and runs gnuplot there. Without a working gnuplot the
 // data and the script are still written and the warning says so.
 FigureSet drawFigures(const std::string& reportDir, const AssessmentResults& results);
+// The two models side by side (Figs. 9-12 as the paper draws them, runout_cdf_models.svg,
+// pf50_models.svg, pf50_dendrometry_models.svg) from the data drawFigures wrote for each model in
+// reportDir/<model>/; the script is reportDir/figures.gp.
+FigureSet drawModelComparisonFigures(const std::string& reportDir, const std::vector<AssessmentResults>& results);
 
 }  // namespace sylva::assess

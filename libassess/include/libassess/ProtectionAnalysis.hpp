@@ -29,15 +29,18 @@ struct StructureAssessment {
 };
 
 // Pearson's r of PF50 with the inventory's G, Mean_D and N over the stands of one structure (NaN
-// below two stands).
+// below two stands), and each r's two-sided p-value (NaN below three).
 struct DendrometricCorrelation {
     stand::ForestStructure structure = stand::ForestStructure::Aggregated;
     std::size_t stands = 0;
     double basalArea = 0, meanDbh = 0, stemsPerHa = 0;
+    double pBasalArea = 0, pMeanDbh = 0, pStemsPerHa = 0;
 };
 
+// One model's results (the assessment holds one per model of its design).
 struct AssessmentResults {
     AssessmentDesign design;
+    dem::Model model = dem::Model::Dem;
     BootstrapSettings bootstrap;         // replicates and confidence; each row has its own derived seed
     std::vector<RunRecord> baseline;     // in run order
     double baselineDist50 = 0;
@@ -48,9 +51,11 @@ struct AssessmentResults {
     double terrainXmin = 0, terrainXmax = 0, terrainYmin = 0, terrainYmax = 0, forestStartX = 0;
 };
 
-// `inventories`: one summary per stand of the design. Every campaign of `plan` must be complete in
-// `store`, and every forest's statistics stored (std::logic_error otherwise: runMissing does both).
-AssessmentResults analyse(const AssessmentDesign& design, const std::vector<Campaign>& plan, const CampaignStore& store,
-                          const std::vector<ForestSummary>& inventories, const BootstrapSettings& bootstrap);
+// The results of `model` from its campaigns in `plan`. `inventories`: one summary per stand of the
+// design. Every campaign of the model must be complete in `store`, and every forest's statistics
+// stored (std::logic_error otherwise: runMissing does both).
+AssessmentResults analyse(const AssessmentDesign& design, dem::Model model, const std::vector<Campaign>& plan,
+                          const CampaignStore& store, const std::vector<ForestSummary>& inventories,
+                          const BootstrapSettings& bootstrap);
 
 }  // namespace sylva::assess

@@ -62,6 +62,7 @@ RunResult simulateLumped(const Scene& scene, int run, std::uint64_t seed, const 
     const Vec3 gravity(0, 0, -cfg.gravity);
     const Ground ground(soil, lp.slopeBaseline);
     const LumpedRebound rebound(lp, radius);
+    const double blockReach = lp.treeReach == TreeReach::Block ? radius : 0;  // added to a stem's DBH/2
     const LumpedTreeImpact treeImpact(lp);
 
     RunResult r;
@@ -104,13 +105,13 @@ RunResult simulateLumped(const Scene& scene, int run, std::uint64_t seed, const 
         if (scene.forested()) {
             const Vec3 mid = 0.5 * (p + q);
             near.clear();
-            const double reach = radius + 0.5 * scene.trees().thickest();
+            const double reach = blockReach + 0.5 * scene.trees().thickest();
             scene.trees().near(mid.x(), mid.y(), 0.5 * (q - p).head<2>().norm() + reach, near);
             for (std::uint32_t i : near) {
                 if (std::find(hitTrees.begin(), hitTrees.end(), i) != hitTrees.end()) continue;
                 const PlacedTree& tree = scene.trees().tree(i);
                 double offset = 0;
-                const double th = firstTouch(p, v, dt, tree.foot, radius + 0.5 * tree.geometry.dbh, offset);
+                const double th = firstTouch(p, v, dt, tree.foot, blockReach + 0.5 * tree.geometry.dbh, offset);
                 if (th < 0 || (hit.time >= 0 && th >= hit.time)) continue;
                 if (at(th).z() - radius >= tree.foot.z() + tree.geometry.height) continue;  // over the top
                 hit = {th, i, offset};
@@ -144,7 +145,7 @@ RunResult simulateLumped(const Scene& scene, int run, std::uint64_t seed, const 
             rec.speedBefore = v.norm();
             rec.energyBefore = 0.5 * mass * v.squaredNorm();
             rec.height = p.z() - tree.foot.z();
-            rec.eccentricity = hit.offset / (radius + 0.5 * tree.geometry.dbh);
+            rec.eccentricity = hit.offset / (blockReach + 0.5 * tree.geometry.dbh);
             const auto out = treeImpact.apply(v, tree.geometry.dbh, rec.eccentricity, rec.height, mass, rng);
             v = out.velocity;
             rec.speedAfter = v.norm();

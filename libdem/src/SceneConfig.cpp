@@ -91,7 +91,8 @@ private:
 // The scene's keys bound to one configuration, with the keys read as text or in other units.
 struct SceneKeys {
     SceneConfig c;
-    std::string shape = "cube", orientation = "random", reading = "isotropic", damping = "viscous", anchorage = "fixed";
+    std::string shape = "cube", orientation = "random", reading = "isotropic", damping = "viscous", anchorage = "fixed",
+                treeReach = "block";
     double restitution = 0;  // used only when soil.restitution is given
     double rootFailureDeg = 0;  // stem.root_failure_rotation_deg
     std::string parameterSet;   // stem.parameters
@@ -214,6 +215,7 @@ SceneKeys::SceneKeys(StemParameterSet set) : parameterSet(name(set)) {
     k.number("lumped.deviation_sd_deg", lm.deviationSdDeg, closed(0, 90, "deg"), "random turn of the direction at a rebound (standard deviation)");
     k.number("lumped.stop_speed_m_s", lm.stopSpeed, aboveUpTo(0, 10, "m/s"), "a block slower than this has stopped");
     k.number("lumped.tree_energy_scale", lm.treeEnergyScale, closed(0, 100, ""), "scales the energy a tree takes (1: Dorren & Berger 2006)");
+    k.other("lumped.tree_reach", treeReach, "block (a tree is hit when the block's centre passes within R + DBH/2 of its axis, the paper's Sect. 2.3.1) | centre (within DBH/2: how Rockyfor3D's code detected impacts before its v6.0; docs/lumped.md)");
     k.number("gravity_m_s2", c.gravity, aboveUpTo(0, 100, "m/s^2"), "");
     k.number("output.trajectory_interval_s", c.trajectoryInterval, aboveUpTo(0, 3600, "s"), "trajectory sampling");
 }
@@ -299,7 +301,7 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
     SceneKeys keys(parameterSetOf(path, overrides));
     SceneConfig& c = keys.c;
     const std::string &shape = keys.shape, &orientation = keys.orientation, &reading = keys.reading, &damping = keys.damping,
-                      &anchorage = keys.anchorage;
+                      &anchorage = keys.anchorage, &treeReach = keys.treeReach;
     const po::options_description& d = keys.table.keys();
     po::variables_map vm;
     std::istringstream setIni(overridesAsIni(overrides));
@@ -339,6 +341,9 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
     if (anchorage != "fixed" && anchorage != "stem_weight")
         throw InputError("stem.anchorage must be fixed or stem_weight, not '" + anchorage + "'");
     c.stem.root.anchorage = anchorage == "fixed" ? RootAnchorage::Fixed : RootAnchorage::StemWeight;
+    if (treeReach != "block" && treeReach != "centre")
+        throw InputError("lumped.tree_reach must be block or centre, not '" + treeReach + "'");
+    c.lumped.treeReach = treeReach == "block" ? TreeReach::Block : TreeReach::Centre;
     c.stem.root.failureRotation = keys.rootFailureDeg * std::acos(-1.0) / 180;
     validate(c.stem);
     c.release.yRangeGiven = vm.count("release.y_min_m") || vm.count("release.y_max_m");

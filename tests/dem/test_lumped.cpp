@@ -143,6 +143,31 @@ TEST(LumpedCalibration, RecoversTheRoughnessOfATarget) {
     EXPECT_GE(fit.roughnessHigh, fit.roughness);
 }
 
+// One 20 cm tree 0.4 m beside a straight path (no random turn, release at y = 100 m): the paper's
+// reach R + DBH/2 = 0.49 + 0.10 m takes it in, the block's centre alone (DBH/2 = 0.1 m, Rockyfor3D's
+// code before v6.0) passes it by; a tree 5 cm off the path is hit either way.
+TEST(LumpedRun, TreeReachIsTheBlocksRadiusPlusTheStemsOrTheStemsAlone) {
+    const auto impacts = [](const std::string& reach, double offset) {
+        sylva::stand::Tree tree;
+        tree.id = 1;
+        tree.x = 150;
+        tree.y = 100 + offset;
+        tree.dbhCm = 20;
+        tree.heightM = 20;
+        sylva::stand::Forest forest;
+        forest.trees.push_back(tree);
+        const Scene scene(loadScene(kNoForest, {"release.y_m=100", "release.y_min_m=100", "release.y_max_m=100",
+                                                "lumped.deviation_sd_deg=0", "lumped.tree_reach=" + reach}),
+                          forest);
+        return simulateLumped(scene, 0, 3).impacts.size();
+    };
+    EXPECT_EQ(impacts("block", 0.4), 1u);
+    EXPECT_EQ(impacts("centre", 0.4), 0u);
+    EXPECT_EQ(impacts("block", 0.05), 1u);
+    EXPECT_EQ(impacts("centre", 0.05), 1u);
+    EXPECT_THROW(sceneFromOverrides({"lumped.tree_reach=stem"}), sylva::InputError);
+}
+
 TEST(LumpedRun, RefusesAnUnknownSoilType) {
     try {
         sceneFromOverrides({"lumped.soil_type=9"});

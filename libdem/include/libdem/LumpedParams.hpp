@@ -1,4 +1,10 @@
 #pragma once
+// How near a stem the block's path must pass to hit it.
+enum class TreeReach {
+    Block,   // the paper's Sect. 2.3.1: centre within R + DBH/2 of the stem's axis
+    Centre,  // the block's centre crossing the stem's disc (DBH/2): Rockyfor3D's C code before v6.0
+};
+
 // Parameters of the lumped-mass model (the paper's second model, Sect. 2.3.1, after Rockyfor3D):
 // the [lumped] section of a scene. Sources and equations: docs/lumped.md.
 namespace sylva::dem {
@@ -17,6 +23,7 @@ struct LumpedParams {
     double stopSpeed = 0.5;
     // Scales every tree's energy capacity (1: Dorren & Berger 2006 as published).
     double treeEnergyScale = 1.0;
+    TreeReach treeReach = TreeReach::Block;
 };
 
 // Mean normal restitution of a Rockyfor3D soil type and the half-width of its range.

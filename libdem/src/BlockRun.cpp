@@ -58,7 +58,7 @@ private:
 
 }  // namespace
 
-Release drawRelease(const Scene& scene, std::uint64_t seed) {
+Release drawRelease(const Scene& scene, std::uint64_t seed, const std::optional<Eigen::Vector2d>& at) {
     SeededRandom rng(seed);
     const auto& cfg = scene.config();
     const auto& rel = cfg.release;
@@ -86,6 +86,10 @@ Release drawRelease(const Scene& scene, std::uint64_t seed) {
                                                     std::to_string(scene.blockTemplate().boundingRadius()) + " m)");
         return {p, q, Vec3(l.speed, 0, 0)};
     }
+    if (at) {
+        refuseOutside(at->x(), at->y(), "release point", "");
+        return {Vec3(at->x(), at->y(), soil.surfaceHeight(at->x(), at->y()) + rel.fallHeight), q};
+    }
     const double y = rel.yMax > rel.yMin ? rng.uniform(rel.yMin, rel.yMax) : rel.yMin;
     refuseOutside(rel.x, y, "release point", "");
     return {Vec3(rel.x, y, soil.surfaceHeight(rel.x, y) + rel.fallHeight), q};
@@ -111,7 +115,7 @@ RunResult simulateBlock(const Scene& scene, int run, std::uint64_t seed, const R
     RunResult r;
     r.run = run;
     r.seed = seed;
-    BlockMotion motion(scene, drawRelease(scene, seed));
+    BlockMotion motion(scene, drawRelease(scene, seed, options.releaseAt));
     const RigidBody& block = motion.block();
     r.release = block.position;
     RestDetector rest(cfg.stop.restDistance, cfg.stop.restTime);

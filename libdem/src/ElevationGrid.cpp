@@ -191,7 +191,28 @@ void ElevationGrid::requireDefined(double x0, double x1, double y0, double y1) c
             if (std::isnan(at(col, row))) failNoData(col, row);
 }
 
+ElevationGrid ElevationGrid::fromValues(int columns, int rows, double x0, double y0, double cellSize, std::vector<double> z,
+                                        std::string source) {
+    if (columns < 2 || rows < 2) throw std::invalid_argument("ElevationGrid: a grid needs at least 2 x 2 cells");
+    if (z.size() != static_cast<std::size_t>(columns) * rows) throw std::invalid_argument("ElevationGrid: values do not fill the grid");
+    if (!(cellSize > 0) || !std::isfinite(x0) || !std::isfinite(y0)) throw std::invalid_argument("ElevationGrid: bad geometry");
+    ElevationGrid g;
+    g.ncols_ = columns;
+    g.nrows_ = rows;
+    g.x0_ = x0;
+    g.y0_ = y0;
+    g.cell_ = cellSize;
+    g.z_ = std::move(z);
+    g.source_ = std::move(source);
+    return g;
+}
+
 void ElevationGrid::failNoData(int col, int row) const {
+    if (rowLine_.empty())
+        throw InputError(source_, 0,
+                         "cell (column " + std::to_string(col + 1) + ", row " + std::to_string(nrows_ - row) +
+                             " from the north-west) is NODATA, but the terrain needs it (cell centre x = " + std::to_string(x0_ + col * cell_) +
+                             ", y = " + std::to_string(y0_ + row * cell_) + ")");
     throw InputError(source_, rowLine_[row],
                      "value " + std::to_string(col + 1) + " is NODATA, but the terrain needs it (cell centre x = " +
                          std::to_string(x0_ + col * cell_) + ", y = " + std::to_string(y0_ + row * cell_) + ")");

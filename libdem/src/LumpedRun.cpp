@@ -68,7 +68,7 @@ RunResult simulateLumped(const Scene& scene, int run, std::uint64_t seed, const 
     RunResult r;
     r.run = run;
     r.seed = seed;
-    const Release release = drawRelease(scene, seed);
+    const Release release = drawRelease(scene, seed, options.releaseAt);
     SeededRandom rng(seed ^ 0x6C756D70ULL);  // its own stream: the release draws stay the DEM's
     Vec3 p = release.position, v = release.velocity;
     r.release = p;

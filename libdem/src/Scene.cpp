@@ -32,11 +32,21 @@ std::shared_ptr<const SoilBed> buildSoil(const TerrainConfig& t) {
     if (!t.profile.empty()) return std::make_shared<SoilBed>(SoilBed::fromProfile(SlopeProfile::readCsv(t.profile), t.soil));
     return std::make_shared<SoilBed>(SoilBed::fromGrid(ElevationGrid::readAsc(t.dtm), t.soil));
 }
+std::shared_ptr<const SoilBed> soilOn(const TerrainConfig& t, const ElevationGrid& dtm) {
+    if (!t.profile.empty() || !t.dtm.empty())
+        throw InputError("the scene names a terrain (" + (t.profile.empty() ? t.dtm : t.profile) + ") and another DTM is given: give one terrain");
+    return std::make_shared<SoilBed>(SoilBed::fromGrid(dtm, t.soil));
+}
 }  // namespace
 
-Scene::Scene(SceneConfig config, stand::Forest forest)
+Scene::Scene(SceneConfig config, stand::Forest forest) : Scene(config, buildSoil(config.terrain), std::move(forest)) {}
+
+Scene::Scene(SceneConfig config, const ElevationGrid& dtm, stand::Forest forest)
+    : Scene(config, soilOn(config.terrain, dtm), std::move(forest)) {}
+
+Scene::Scene(SceneConfig config, std::shared_ptr<const SoilBed> soil, stand::Forest forest)
     : config_(std::move(config)),
-      soil_(buildSoil(config_.terrain)),
+      soil_(std::move(soil)),
       block_(makeBlock(config_.block)),
       forest_(chooseForest(config_, std::move(forest))) {
     // Forest runs release across the slope (Sect. 2.3.2: Y uniform in [80, 120] m) unless the scene

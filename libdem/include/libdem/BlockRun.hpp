@@ -2,6 +2,7 @@
 // One block released on the slope and followed until it rests, leaves the domain or runs out of time.
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -70,6 +71,9 @@ struct RunResult {
 
 struct RunOptions {
     bool recordTrajectory = false;
+    // Release above this point (x, y) instead of the scene's release point and range (hazard maps:
+    // a point drawn in a release cell); the fall height and the orientation stay the scene's.
+    std::optional<Eigen::Vector2d> releaseAt;
 };
 
 // Where and how a run's block starts: drawn from the run's seed alone.
@@ -78,8 +82,8 @@ struct Release {
     Quat orientation;
     Vec3 velocity = Vec3::Zero();
 };
-// Throws InputError if the point is outside the terrain.
-Release drawRelease(const Scene& scene, std::uint64_t seed);
+// Throws InputError if the point is outside the terrain. `at`: RunOptions::releaseAt.
+Release drawRelease(const Scene& scene, std::uint64_t seed, const std::optional<Eigen::Vector2d>& at = std::nullopt);
 
 // The run's random draws (orientation, release y) come only from `seed`, so a run is the same
 // whichever thread runs it. Throws SimulationError on NaN, energy growth or an unstable forced step,

@@ -15,6 +15,12 @@ public:
     // too few or too many rows) name the file and the line. NODATA cells are accepted here and
     // rejected only where a height is needed (see requireDefined).
     static ElevationGrid readAsc(const std::string& path);
+    // A grid read by someone else (e.g. GDAL): `z` row-major with row 0 the southernmost, NaN for
+    // NODATA; (x0, y0) the centre of the south-west cell. Errors about a NODATA cell then name the
+    // cell (column and row from the north-west, as GIS tools count) in `source`.
+    // Throws std::invalid_argument on fewer than 2 x 2 cells, a size mismatch or a cell size <= 0.
+    static ElevationGrid fromValues(int columns, int rows, double x0, double y0, double cellSize, std::vector<double> z,
+                                    std::string source);
 
     // Bilinear between cell centres; throws InputError naming the file and line of a NODATA cell
     // that the interpolation at (x, y) needs. Non-finite coordinates give NaN (here and below).
@@ -49,7 +55,7 @@ private:
     double x0_ = 0, y0_ = 0, cell_ = 1;  // centre of the south-west cell
     std::vector<double> z_;              // row-major, row 0 = south; NODATA stored as NaN
     std::string source_;                 // file name, for errors raised after reading
-    std::vector<long> rowLine_;          // line of each row in the file (row 0 = south)
+    std::vector<long> rowLine_;          // line of each row in the file (row 0 = south); empty: not read from text
 };
 
 }  // namespace sylva::dem

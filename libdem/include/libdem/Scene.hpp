@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "libdem/ContactLawTable.hpp"
+#include "libdem/ElevationGrid.hpp"
 #include "libdem/SceneConfig.hpp"
 #include "libdem/TreeField.hpp"
 #include "libstand/Forest.hpp"
@@ -15,6 +16,9 @@ public:
     // Throws InputError on an unusable terrain, block or forest. The forest is the one of
     // config.forestFile if that is set, else `forest` (coordinates as in the terrain's frame).
     explicit Scene(SceneConfig config, stand::Forest forest = {});
+    // The terrain is `dtm` (read by the caller, e.g. through GDAL); the configuration must name
+    // no terrain file (InputError otherwise).
+    Scene(SceneConfig config, const ElevationGrid& dtm, stand::Forest forest = {});
 
     const SceneConfig& config() const { return config_; }
     const SoilBed& soil() const { return *soil_; }
@@ -27,6 +31,7 @@ public:
     Scene withLumped(const LumpedParams& params) const;
 
 private:
+    Scene(SceneConfig config, std::shared_ptr<const SoilBed> soil, stand::Forest forest);
     SceneConfig config_;
     std::shared_ptr<const SoilBed> soil_;
     RigidBody block_;

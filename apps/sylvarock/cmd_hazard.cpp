@@ -1,0 +1,81 @@
+// sylvarock hazard: blocks released from every cell of a release area on a DTM, through a forest or
+// without it, and the hazard rasters on the DTM's own grid (GeoTIFF; libassess/HazardRun.hpp,
+// docs/hazard.md).
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "Cli.hpp"
+#include "ProgressBar.hpp"
+#include "libassess/HazardRun.hpp"
+#include "libcommon/InputError.hpp"
+
+namespace sylva::cli {
+namespace {
+
+int runHazardCommand(int argc, const char* const* argv) {
+    po::options_description o("hazard");
+    std::vector<std::string> sets;
+    o.add_options()
+        ("dtm", po::value<std::string>(), "the terrain: a raster GDAL reads (GeoTIFF, ESRI ASCII, ...), square cells, north up; its grid and CRS are the rasters'")
+        ("release", po::value<std::string>(), "release area: polygons (GeoJSON, GeoPackage, Shapefile, ...) in the DTM's CRS; every DTM cell whose centre is inside releases blocks")
+        ("runs-per-cell", po::value<int>()->default_value(10), "N: blocks released from each release cell (at a uniform point of the cell, random orientation)")
+        ("trees", po::value<std::string>(), "trees: CSV x,y,dbh_cm in the DTM's CRS (or a sylvarock forest file), or a point layer with a dbh_cm field")
+        ("compare-bare", po::bool_switch(), "also run without the trees: rasters in OUT/bare/ and the forest's protection map OUT/protection.tif")
+        ("model", po::value<std::string>()->default_value("dem"), "dem (the discrete element model) | lumped (the lumped-mass model, thousands of blocks per second; docs/lumped.md)")
+        ("scene", po::value<std::string>(), "scene INI for the block, contact laws and stems (its terrain, if any, is replaced by --dtm); default: the built-in values")
+        ("set", po::value(&sets)->composing(), "override a scene key: --set section.key=value (repeatable; sylvarock scene --help-keys lists them)")
+        ("seed", po::value<Seed>()->default_value(Seed{}, "1"), "seed; run i's release point and draws derive from (seed, i)")
+        ("threads", po::value<int>()->default_value(0), "worker threads (0: all cores); results do not depend on it")
+        ("out", po::value<std::string>(), "output folder (new or empty): reach_probability.tif, passing_count.tif, deposits.tif, energy_p95_kj.tif, height_p95_m.tif, tree_impacts.tif, summary.json");
+    po::variables_map vm;
+    if (!parse(argc, argv, o, vm,
+               "sylvarock hazard --dtm DTM --release RELEASE.geojson --runs-per-cell N --out DIR [--trees POINTS] [--compare-bare] "
+               "[--model dem|lumped] [--seed S] [--threads T]",
+               "  sylvarock hazard --dtm data/hazard/slope.tif --release data/hazard/release.geojson --trees data/hazard/trees.csv \\\n"
+               "      --runs-per-cell 5 --compare-bare --seed 1 --out out/hazard\n"
+               "  gdalinfo -stats out/hazard/reach_probability.tif     (the rasters open in QGIS over the DTM)\n"))
+        return 0;
+    for (const char* required : {"dtm", "release", "out"})
+        if (!vm.count(required)) throw InputError(std::string("--") + required + " is required (sylvarock hazard --help)");
+    assess::HazardOptions h;
+    h.dtmPath = vm["dtm"].as<std::string>();
+    h.releasePath = vm["release"].as<std::string>();
+    if (vm.count("trees")) h.treesPath = vm["trees"].as<std::string>();
+    if (vm.count("scene")) h.sceneFile = vm["scene"].as<std::string>();
+    h.sceneOverrides = sets;
+    h.model = dem::parseModel(vm["model"].as<std::string>());
+    h.runsPerCell = vm["runs-per-cell"].as<int>();
+    h.seed = vm["seed"].as<Seed>().value;
+    h.threads = threadCount(vm);
+    h.compareBare = vm["compare-bare"].as<bool>();
+    h.outDir = vm["out"].as<std::string>();
+    h.onNote = [](const std::string& text) { std::cerr << "sylvarock hazard: " << text << "\n"; };
+    ProgressBar progress(stderrIsTerminal());
+    h.onRunDone = [&progress](const std::string& pass, int done, int total) { progress.update(done, total, pass); };
+
+    const auto t0 = std::chrono::steady_clock::now();
+    const assess::HazardResults r = assess::runHazard(h);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    long failed = 0;
+    std::printf("%ld release cells x %d blocks, %ld trees\n", r.releaseCells, h.runsPerCell, r.trees);
+    for (const auto& p : r.passes) {
+        std::printf("%-6s %ld blocks: %ld at rest, %ld left the DTM, %ld at the time limit; path length p50 %.1f m, p90 %.1f m; "
+                    "reach p50 %.1f m, max %.1f m; %ld tree impacts\n",
+                    p.name.c_str(), p.blocks, p.rest, p.leftDomain, p.timeLimit, p.pathP50, p.pathP90, p.reachP50, p.reachMax, p.treeImpacts);
+        failed += p.failed;
+    }
+    std::printf("rasters and summary.json in %s (%.1f s)\n", h.outDir.c_str(), wall);
+    if (failed) {
+        std::cerr << "sylvarock hazard: " << failed << " run(s) stopped on a numerical error and are left out (summary.json failed_runs)\n";
+        return kRunsFailed;
+    }
+    return 0;
+}
+
+const CommandRegistration reg{{"hazard", "hazard rasters (reach probability, deposits, energy, height) on a DTM from a release area", &runHazardCommand}};
+
+}  // namespace
+}  // namespace sylva::cli

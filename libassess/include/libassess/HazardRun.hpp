@@ -1,0 +1,47 @@
+#pragma once
+// `sylvarock hazard` as a library call: N blocks from each release cell of a DTM, through a forest or
+// without it, and the hazard rasters on the DTM's own grid (docs/hazard.md).
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "libdem/Campaign.hpp"
+
+namespace sylva::assess {
+
+struct HazardOptions {
+    std::string dtmPath;       // any raster GDAL reads
+    std::string releasePath;   // polygons (GeoJSON, GeoPackage, Shapefile, ...)
+    std::string treesPath;     // optional: CSV x,y,dbh_cm (or a forest file), or a point layer with a dbh_cm field
+    std::string sceneFile;     // optional: block, contact laws, stems; its terrain is replaced by the DTM
+    std::vector<std::string> sceneOverrides;
+    dem::Model model = dem::Model::Dem;
+    int runsPerCell = 10;
+    std::uint64_t seed = 1;
+    int threads = 0;
+    bool compareBare = false;  // also without the forest, and the forest's protection map
+    std::string outDir;
+    std::function<void(const std::string&)> onNote;
+    std::function<void(const std::string& pass, int done, int total)> onRunDone;
+};
+
+struct HazardPass {
+    std::string name;     // "forest" or "bare"
+    long blocks = 0, failed = 0, rest = 0, leftDomain = 0, timeLimit = 0;
+    double pathP50 = 0, pathP90 = 0, reachP50 = 0, reachP90 = 0, reachMax = 0;  // m
+    long treeImpacts = 0;
+};
+
+struct HazardResults {
+    long releaseCells = 0;
+    long trees = 0;
+    std::vector<HazardPass> passes;  // the forest (or the bare slope without trees), then bare with compareBare
+    std::vector<std::string> rasters;  // written, relative to outDir
+};
+
+// Writes the rasters and summary.json into outDir (which must be new or empty). InputError for
+// unusable inputs, before any run.
+HazardResults runHazard(const HazardOptions& options);
+
+}  // namespace sylva::assess

@@ -1,0 +1,127 @@
+#include "libassess/GeoRaster.hpp"
+
+#include <cpl_conv.h>
+#include <cpl_error.h>
+#include <gdal_priv.h>
+#include <ogr_spatialref.h>
+
+#include <cmath>
+#include <mutex>
+
+#include "libcommon/InputError.hpp"
+
+namespace sylva::assess {
+
+void initGdal() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        GDALAllRegister();
+        CPLSetErrorHandler(CPLQuietErrorHandler);
+    });
+}
+
+std::string gdalLastError() {
+    const char* m = CPLGetLastErrorMsg();
+    return m ? m : "";
+}
+
+Eigen::Vector2d RasterGrid::centre(int col, int row) const {
+    const auto& g = geoTransform;
+    return {g[0] + (col + 0.5) * g[1], g[3] + (row + 0.5) * g[5]};
+}
+
+bool RasterGrid::cellOf(double x, double y, int& col, int& row) const {
+    const auto& g = geoTransform;
+    const double c = (x - g[0]) / g[1], r = (y - g[3]) / g[5];
+    if (!(c >= 0 && r >= 0 && c < columns && r < rows)) return false;
+    col = static_cast<int>(c);
+    row = static_cast<int>(r);
+    return true;
+}
+
+Dtm readDtm(const std::string& path) {
+    initGdal();
+    CPLErrorReset();
+    GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+    if (!ds) throw InputError(path, 0, "cannot read it as a raster (" + gdalLastError() + ")");
+    if (ds->GetRasterCount() < 1) throw InputError(path, 0, "the raster has no band");
+    Dtm d;
+    d.path = path;
+    RasterGrid& g = d.grid;
+    g.columns = ds->GetRasterXSize();
+    g.rows = ds->GetRasterYSize();
+    if (g.columns < 2 || g.rows < 2)
+        throw InputError(path, 0, "a DTM of " + std::to_string(g.columns) + " x " + std::to_string(g.rows) + " cells: at least 2 x 2 are needed");
+    if (ds->GetGeoTransform(g.geoTransform.data()) != CE_None)
+        throw InputError(path, 0, "the raster has no georeferencing (geotransform): sylvarock needs cell size and position");
+    const auto& t = g.geoTransform;
+    if (t[2] != 0 || t[4] != 0) throw InputError(path, 0, "a rotated or sheared raster: warp it north-up first (gdalwarp)");
+    if (!(t[1] > 0) || std::fabs(t[5] + t[1]) > 1e-9 * t[1])
+        throw InputError(path, 0, "cells of " + readableNumber(t[1]) + " x " + readableNumber(-t[5]) +
+                                      " m: sylvarock needs square cells, north up (gdalwarp -tr D D)");
+    if (const OGRSpatialReference* crs = ds->GetSpatialRef()) {
+        char* wkt = nullptr;
+        crs->exportToWkt(&wkt);
+        g.crsWkt = wkt ? wkt : "";
+        CPLFree(wkt);
+    }
+    GDALRasterBand* band = ds->GetRasterBand(1);
+    int hasNoData = 0;
+    const double noData = band->GetNoDataValue(&hasNoData);
+    std::vector<double> z(static_cast<std::size_t>(g.columns) * g.rows);
+    if (band->RasterIO(GF_Read, 0, 0, g.columns, g.rows, z.data(), g.columns, g.rows, GDT_Float64, 0, 0) != CE_None)
+        throw InputError(path, 0, "cannot read its heights (" + gdalLastError() + ")");
+    // GDAL's rows run north to south, the simulator's south to north.
+    std::vector<double> south(z.size());
+    for (int r = 0; r < g.rows; ++r)
+        for (int c = 0; c < g.columns; ++c) {
+            const double v = z[g.index(c, r)];
+            south[static_cast<std::size_t>(g.rows - 1 - r) * g.columns + c] =
+                (hasNoData && v == noData) || !std::isfinite(v) ? std::nan("") : v;
+        }
+    const Eigen::Vector2d sw = g.centre(0, g.rows - 1);
+    d.elevation = dem::ElevationGrid::fromValues(g.columns, g.rows, sw.x(), sw.y(), t[1], std::move(south), path);
+    return d;
+}
+
+void writeGeoTiff(const std::string& path, const RasterGrid& grid, const std::vector<float>& values, double noData,
+                  const std::string& description) {
+    initGdal();
+    GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GTiff");
+    if (!driver) throw InputError(path, 0, "GDAL has no GeoTIFF driver");
+    char** options = nullptr;
+    options = CSLSetNameValue(options, "COMPRESS", "DEFLATE");
+    CPLErrorReset();
+    GDALDatasetUniquePtr ds(driver->Create(path.c_str(), grid.columns, grid.rows, 1, GDT_Float32, options));
+    CSLDestroy(options);
+    if (!ds) throw InputError(path, 0, "cannot write (" + gdalLastError() + ")");
+    auto gt = grid.geoTransform;
+    ds->SetGeoTransform(gt.data());
+    if (!grid.crsWkt.empty()) ds->SetProjection(grid.crsWkt.c_str());
+    GDALRasterBand* band = ds->GetRasterBand(1);
+    band->SetNoDataValue(noData);
+    band->SetDescription(description.c_str());
+    std::vector<float> data = values;
+    if (band->RasterIO(GF_Write, 0, 0, grid.columns, grid.rows, data.data(), grid.columns, grid.rows, GDT_Float32, 0, 0) != CE_None)
+        throw InputError(path, 0, "cannot write (" + gdalLastError() + ")");
+    ds.reset();  // closes and flushes the file (GDAL 3.6 has no Close() returning an error)
+    if (CPLGetLastErrorType() >= CE_Failure) throw InputError(path, 0, "cannot write (" + gdalLastError() + ")");
+}
+
+bool sameCrs(const std::string& a, const std::string& b) {
+    if (a.empty() || b.empty()) return true;
+    OGRSpatialReference ra, rb;
+    if (ra.importFromWkt(a.c_str()) != OGRERR_NONE || rb.importFromWkt(b.c_str()) != OGRERR_NONE) return a == b;
+    const char* options[] = {"IGNORE_DATA_AXIS_TO_SRS_AXIS_MAPPING=YES", "CRITERION=EQUIVALENT_EXCEPT_AXIS_ORDER_GEOGCRS", nullptr};
+    return ra.IsSame(&rb, options);
+}
+
+std::string crsName(const std::string& wkt) {
+    if (wkt.empty()) return "no CRS";
+    OGRSpatialReference r;
+    if (r.importFromWkt(wkt.c_str()) != OGRERR_NONE) return "an unreadable CRS";
+    const char* name = r.GetName();
+    return name ? name : "an unnamed CRS";
+}
+
+}  // namespace sylva::assess

@@ -1,0 +1,264 @@
+#include "libassess/HazardRun.hpp"
+
+#include <gdal_priv.h>
+#include <nlohmann/json.hpp>
+#include <ogrsf_frmts.h>
+
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <unordered_map>
+
+#include "libassess/GeoRaster.hpp"
+#include "libassess/HazardMap.hpp"
+#include "libassess/ReleaseArea.hpp"
+#include "libcommon/InputError.hpp"
+#include "libcommon/SeededRandom.hpp"
+#include "libcommon/ThreadTeam.hpp"
+#include "libdem/CampaignSummary.hpp"
+#include "libdem/LumpedRun.hpp"
+#include "libdem/SimulationError.hpp"
+#include "libstand/Allometry.hpp"
+
+namespace fs = std::filesystem;
+
+namespace sylva::assess {
+
+namespace {
+
+constexpr float kNoData = -9999;
+// A trajectory sample at least this often: at 20 m/s a block moves 1 m between samples, and the trace
+// walks between them in quarter cells (HazardMap.hpp).
+constexpr double kMaxSampleInterval = 0.05;
+
+bool endsWith(const std::string& s, const std::string& tail) {
+    return s.size() >= tail.size() && std::equal(tail.rbegin(), tail.rend(), s.rbegin(),
+                                                 [](char a, char b) { return std::tolower(a) == std::tolower(b); });
+}
+
+// Trees from a point layer: each point a stem, its DBH in the field dbh_cm; allometry from the DBH
+// (Eqs. 11-13), as for a CSV without it.
+stand::Forest readTreeLayer(const std::string& path, const Dtm& dtm) {
+    initGdal();
+    CPLErrorReset();
+    GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
+    if (!ds) throw InputError(path, 0, "cannot read it as a vector layer (" + gdalLastError() + ")");
+    stand::Forest forest;
+    forest.source = path;
+    for (OGRLayer* layer : ds->GetLayers()) {
+        const OGRSpatialReference* crs = layer->GetSpatialRef();
+        std::string wkt;
+        if (crs) {
+            char* w = nullptr;
+            crs->exportToWkt(&w);
+            wkt = w ? w : "";
+            CPLFree(w);
+        }
+        if (!sameCrs(wkt, dtm.grid.crsWkt))
+            throw InputError(path, 0, "layer '" + std::string(layer->GetName()) + "' is in " + crsName(wkt) + ", the DTM in " +
+                                          crsName(dtm.grid.crsWkt) + ": reproject it (ogr2ogr -t_srs)");
+        const int dbhField = layer->GetLayerDefn()->GetFieldIndex("dbh_cm");
+        if (dbhField < 0) throw InputError(path, 0, "layer '" + std::string(layer->GetName()) + "' has no field dbh_cm (each tree's DBH in cm)");
+        for (auto& feature : *layer) {
+            const OGRGeometry* g = feature->GetGeometryRef();
+            if (!g || wkbFlatten(g->getGeometryType()) != wkbPoint) continue;
+            const auto* point = g->toPoint();
+            stand::Tree t;
+            t.id = static_cast<long>(forest.trees.size() + 1);
+            t.x = point->getX();
+            t.y = point->getY();
+            t.dbhCm = feature->GetFieldAsDouble(dbhField);
+            if (!feature->IsFieldSetAndNotNull(dbhField) || !(t.dbhCm > 0) || t.dbhCm > 200)
+                throw InputError(path, 0, "feature " + std::to_string(feature->GetFID()) + ": dbh_cm " +
+                                              (feature->IsFieldSetAndNotNull(dbhField) ? readableNumber(t.dbhCm) : "missing") +
+                                              " is not a DBH in (0, 200] cm");
+            t.heightM = stand::treeHeightM(t.dbhCm);
+            t.crownLengthM = stand::crownLengthM(t.heightM);
+            t.crownMassKg = stand::crownMassKg(t.dbhCm);
+            forest.trees.push_back(t);
+        }
+    }
+    if (forest.trees.empty()) throw InputError(path, 0, "no point in the file: trees are a point layer with a dbh_cm field");
+    return forest;
+}
+
+stand::Forest readTrees(const std::string& path, const Dtm& dtm) {
+    return endsWith(path, ".csv") ? stand::readForestCsv(path) : readTreeLayer(path, dtm);
+}
+
+// Empty or new: a hazard run never mixes its rasters with someone else's files.
+void prepareOutDir(const std::string& dir) {
+    if (dir.empty()) throw InputError("--out DIR is required");
+    if (fs::exists(dir) && (!fs::is_directory(dir) || !fs::is_empty(dir)))
+        throw InputError("--out " + dir + " exists and is not an empty folder: use another --out");
+    fs::create_directories(dir);
+}
+
+HazardPass runPass(const std::string& name, const dem::Scene& scene, const Dtm& dtm, const std::vector<ReleaseCell>& cells,
+                   const HazardOptions& o, HazardMap& map) {
+    std::unordered_map<long, Eigen::Vector2d> treeAt;
+    for (const auto& t : scene.forest().trees) treeAt[t.id] = {t.x, t.y};
+    const long total = static_cast<long>(cells.size()) * o.runsPerCell;
+    std::vector<BlockTrace> traces(static_cast<std::size_t>(total));
+    std::vector<char> failed(traces.size(), 0);
+    std::atomic<long> next{0};
+    std::mutex progress;
+    int done = 0;
+    const double cell = dtm.grid.cellSize();
+    runOnThreads(threadsFor(o.threads, total), [&] {
+        for (long i; (i = next++) < total;) {
+            const std::uint64_t seed = dem::runSeed(o.seed, static_cast<int>(i));
+            // The release point: uniform in the cell, from the run's own stream (as the block's orientation).
+            SeededRandom rng(dem::splitmix64(seed));
+            const Eigen::Vector2d centre = dtm.grid.centre(cells[i / o.runsPerCell].column, cells[i / o.runsPerCell].row);
+            dem::RunOptions run;
+            run.recordTrajectory = true;
+            run.releaseAt = Eigen::Vector2d(centre.x() + rng.uniform(-0.5, 0.5) * cell, centre.y() + rng.uniform(-0.5, 0.5) * cell);
+            try {
+                const dem::RunResult r = o.model == dem::Model::Dem ? dem::simulateBlock(scene, static_cast<int>(i), seed, run)
+                                                                     : dem::simulateLumped(scene, static_cast<int>(i), seed, run);
+                traces[i] = traceRun(r, dtm, treeAt);
+            } catch (const dem::SimulationError& e) {
+                failed[i] = 1;
+                if (o.onNote) o.onNote(name + " run " + std::to_string(i) + " (seed " + std::to_string(seed) + ") stopped on a numerical error and is left out: " + e.what());
+            }
+            std::lock_guard<std::mutex> lock(progress);
+            ++done;
+            if (o.onRunDone) o.onRunDone(name, done, static_cast<int>(total));
+        }
+    });
+    HazardPass pass;
+    pass.name = name;
+    std::vector<double> path, reach;
+    for (std::size_t i = 0; i < traces.size(); ++i) {
+        if (failed[i]) {
+            ++pass.failed;
+            continue;
+        }
+        const BlockTrace& t = traces[i];
+        map.add(t);
+        ++pass.blocks;
+        pass.rest += t.reason == dem::StopReason::Rest;
+        pass.leftDomain += t.reason == dem::StopReason::LeftDomain;
+        pass.timeLimit += t.reason == dem::StopReason::TimeLimit;
+        pass.treeImpacts += static_cast<long>(t.impactCells.size());
+        path.push_back(t.pathLengthM);
+        reach.push_back(t.reachM);
+    }
+    if (!path.empty()) {
+        pass.pathP50 = dem::quantile(path, 0.5);
+        pass.pathP90 = dem::quantile(path, 0.9);
+        pass.reachP50 = dem::quantile(reach, 0.5);
+        pass.reachP90 = dem::quantile(reach, 0.9);
+        pass.reachMax = *std::max_element(reach.begin(), reach.end());
+    }
+    return pass;
+}
+
+// Cells where the DTM has no height get NODATA in every raster.
+std::vector<float> maskNoData(std::vector<float> values, const Dtm& dtm) {
+    const RasterGrid& g = dtm.grid;
+    for (int r = 0; r < g.rows; ++r)
+        for (int c = 0; c < g.columns; ++c) {
+            const Eigen::Vector2d p = g.centre(c, r);
+            bool defined = true;
+            try {
+                dtm.elevation.requireDefined(p.x(), p.x(), p.y(), p.y());
+            } catch (const InputError&) {
+                defined = false;
+            }
+            if (!defined) values[g.index(c, r)] = kNoData;
+        }
+    return values;
+}
+
+std::vector<std::string> writeRasters(const std::string& dir, const HazardMap& map, const Dtm& dtm, bool forested) {
+    fs::create_directories(dir);
+    std::vector<std::pair<std::string, std::vector<float>>> rasters{
+        {"reach_probability.tif", map.reachProbability()},
+        {"passing_count.tif", map.passingCount()},
+        {"deposits.tif", map.deposits()},
+        {"energy_p95_kj.tif", map.energyP95Kj(kNoData)},
+        {"height_p95_m.tif", map.heightP95M(kNoData)}};
+    if (forested) rasters.push_back({"tree_impacts.tif", map.treeImpacts()});
+    std::vector<std::string> names;
+    for (auto& [name, values] : rasters) {
+        writeGeoTiff((fs::path(dir) / name).string(), dtm.grid, maskNoData(std::move(values), dtm), kNoData, name.substr(0, name.size() - 4));
+        names.push_back(name);
+    }
+    return names;
+}
+
+nlohmann::ordered_json passJson(const HazardPass& p) {
+    return {{"blocks", p.blocks},
+            {"failed_runs", p.failed},
+            {"stop_reasons", {{"rest", p.rest}, {"left_domain", p.leftDomain}, {"time_limit", p.timeLimit}}},
+            {"path_length_m", {{"p50", p.pathP50}, {"p90", p.pathP90}}},
+            {"reach_horizontal_m", {{"p50", p.reachP50}, {"p90", p.reachP90}, {"max", p.reachMax}}},
+            {"tree_impacts", p.treeImpacts}};
+}
+
+}  // namespace
+
+HazardResults runHazard(const HazardOptions& o) {
+    if (o.runsPerCell < 1) throw InputError("--runs-per-cell must be at least 1, got " + std::to_string(o.runsPerCell));
+    const Dtm dtm = readDtm(o.dtmPath);
+    const std::vector<ReleaseCell> cells = readReleaseCells(o.releasePath, dtm);
+    const long total = static_cast<long>(cells.size()) * o.runsPerCell;
+    if (total > 100000000) throw InputError("--runs-per-cell " + std::to_string(o.runsPerCell) + " on " + std::to_string(cells.size()) +
+                                            " release cells is " + std::to_string(total) + " runs: more than 10^8");
+    dem::SceneConfig config = o.sceneFile.empty() ? dem::sceneFromOverrides(o.sceneOverrides) : dem::loadScene(o.sceneFile, o.sceneOverrides);
+    if (!config.terrain.profile.empty() || !config.terrain.dtm.empty()) {
+        if (o.onNote) o.onNote("the scene's terrain (" + (config.terrain.profile.empty() ? config.terrain.dtm : config.terrain.profile) +
+                               ") is replaced by the DTM " + o.dtmPath);
+        config.terrain.profile.clear();
+        config.terrain.dtm.clear();
+    }
+    if (!config.forestFile.empty()) throw InputError(o.sceneFile, 0, "the scene places a forest: give the trees with --trees");
+    if (config.launch.enabled) throw InputError("a single-tree launch (block.speed_m_s) has no place in a hazard map");
+    config.trajectoryInterval = std::min(config.trajectoryInterval, kMaxSampleInterval);
+    stand::Forest forest;
+    if (!o.treesPath.empty()) forest = readTrees(o.treesPath, dtm);
+    if (o.compareBare && forest.trees.empty()) throw InputError("--compare-bare compares with a forest: give --trees");
+    prepareOutDir(o.outDir);
+
+    HazardResults results;
+    results.releaseCells = static_cast<long>(cells.size());
+    results.trees = static_cast<long>(forest.trees.size());
+    const bool forested = !forest.trees.empty();
+    const dem::Scene scene(config, dtm.elevation, std::move(forest));
+    HazardMap map(dtm.grid);
+    results.passes.push_back(runPass(forested ? "forest" : "bare", scene, dtm, cells, o, map));
+    results.rasters = writeRasters(o.outDir, map, dtm, forested);
+    if (o.compareBare) {
+        const dem::Scene bare(config, dtm.elevation);
+        HazardMap bareMap(dtm.grid);
+        results.passes.push_back(runPass("bare", bare, dtm, cells, o, bareMap));
+        for (const auto& name : writeRasters(o.outDir + "/bare", bareMap, dtm, false)) results.rasters.push_back("bare/" + name);
+        // What the forest takes off the reach probability: bare minus forest, in [-1, 1].
+        std::vector<float> protection = bareMap.reachProbability();
+        const std::vector<float> withForest = map.reachProbability();
+        for (std::size_t i = 0; i < protection.size(); ++i) protection[i] -= withForest[i];
+        writeGeoTiff(o.outDir + "/protection.tif", dtm.grid, maskNoData(std::move(protection), dtm), kNoData, "protection");
+        results.rasters.push_back("protection.tif");
+    }
+
+    nlohmann::ordered_json j;
+    j["dtm"] = o.dtmPath;
+    j["grid"] = {{"columns", dtm.grid.columns}, {"rows", dtm.grid.rows}, {"cell_size_m", dtm.grid.cellSize()}, {"crs", crsName(dtm.grid.crsWkt)}};
+    j["release"] = o.releasePath;
+    j["release_cells"] = results.releaseCells;
+    j["runs_per_cell"] = o.runsPerCell;
+    j["model"] = dem::toString(o.model);
+    j["seed"] = o.seed;
+    j["trees"] = results.trees;
+    for (const auto& p : results.passes) j["passes"][p.name] = passJson(p);
+    j["rasters"] = results.rasters;
+    std::ofstream out(o.outDir + "/summary.json");
+    out << j.dump(2) << "\n";
+    if (!out) throw InputError(o.outDir + "/summary.json", 0, "cannot write");
+    return results;
+}
+
+}  // namespace sylva::assess

@@ -67,7 +67,8 @@ int runHazardCommand(int argc, const char* const* argv) {
                     p.name.c_str(), p.blocks, p.rest, p.leftDomain, p.timeLimit, p.pathP50, p.pathP90, p.reachP50, p.reachMax, p.treeImpacts);
         failed += p.failed;
     }
-    std::printf("rasters and summary.json in %s (%.1f s)\n", h.outDir.c_str(), wall);
+    if (!r.figureWarning.empty()) std::cerr << "sylvarock hazard: warning: " << r.figureWarning << "\n";
+    std::printf("rasters, map.svg and summary.json in %s (%.1f s)\n", h.outDir.c_str(), wall);
     if (failed) {
         std::cerr << "sylvarock hazard: " << failed << " run(s) stopped on a numerical error and are left out (summary.json failed_runs)\n";
         return kRunsFailed;

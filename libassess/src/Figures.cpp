@@ -142,7 +142,8 @@ std::string script(const AssessmentResults& results) {
     return gp.str();
 }
 
-// Writes `script` as figures.gp into reportDir and runs gnuplot there; `svgs` are the files it draws.
+}  // namespace
+
 FigureSet runGnuplot(const std::string& reportDir, const std::string& script, const std::vector<std::string>& svgs) {
     {
         std::ofstream gp(reportDir + "/figures.gp", std::ios::trunc);
@@ -159,6 +160,8 @@ FigureSet runGnuplot(const std::string& reportDir, const std::string& script, co
         set.warning = "gnuplot did not draw every figure (is gnuplot-nox installed?); the data and figures.gp are in " + reportDir;
     return set;
 }
+
+namespace {
 
 // The comparison's figures read each model's figure data, in <model>/data/ beside them.
 std::string comparisonScript(const std::vector<AssessmentResults>& results) {

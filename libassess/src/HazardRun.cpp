@@ -11,6 +11,7 @@
 #include <unordered_map>
 
 #include "libassess/GeoRaster.hpp"
+#include "libassess/HazardFigure.hpp"
 #include "libassess/HazardMap.hpp"
 #include "libassess/ReleaseArea.hpp"
 #include "libcommon/InputError.hpp"
@@ -231,6 +232,8 @@ HazardResults runHazard(const HazardOptions& o) {
     HazardMap map(dtm.grid);
     results.passes.push_back(runPass(forested ? "forest" : "bare", scene, dtm, cells, o, map));
     results.rasters = writeRasters(o.outDir, map, dtm, forested);
+    const FigureSet figure = drawHazardMap(o.outDir, dtm, maskNoData(map.reachProbability(), dtm), scene.forest());
+    results.figureWarning = figure.warning;
     if (o.compareBare) {
         const dem::Scene bare(config, dtm.elevation);
         HazardMap bareMap(dtm.grid);

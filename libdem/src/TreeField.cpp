@@ -14,6 +14,7 @@ TreeField::TreeField(const stand::Forest& forest, const SoilBed& soil) {
     for (const auto& t : forest.trees) {
         if (t.x < soil.xmin() || t.x > soil.xmax() || t.y < soil.ymin() || t.y > soil.ymax()) {
             std::ostringstream what;
+            what.precision(10);  // projected coordinates (Lambert-93: 6 460 196 m) to the centimetre
             what << (forest.source.empty() ? "forest: " : "") << "stem " << t.id << " at (" << t.x << ", " << t.y
                  << ") is outside the terrain (x in [" << soil.xmin() << ", " << soil.xmax() << "], y in ["
                  << soil.ymin() << ", " << soil.ymax() << "] m): a forest in another frame or CRS?";

@@ -24,4 +24,8 @@ FigureSet drawFigures(const std::string& reportDir, const AssessmentResults& res
 // reportDir/<model>/; the script is reportDir/figures.gp.
 FigureSet drawModelComparisonFigures(const std::string& reportDir, const std::vector<AssessmentResults>& results);
 
+// Writes `script` as figures.gp into `dir` and runs gnuplot there; `svgs` are the files it should
+// draw (the warning says so when some are missing).
+FigureSet runGnuplot(const std::string& dir, const std::string& script, const std::vector<std::string>& svgs);
+
 }  // namespace sylva::assess

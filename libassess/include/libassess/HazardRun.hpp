@@ -38,9 +38,10 @@ struct HazardResults {
     long trees = 0;
     std::vector<HazardPass> passes;  // the forest (or the bare slope without trees), then bare with compareBare
     std::vector<std::string> rasters;  // written, relative to outDir
+    std::string figureWarning;         // why map.svg is missing (no gnuplot), empty if drawn
 };
 
-// Writes the rasters and summary.json into outDir (which must be new or empty). InputError for
+// Writes the rasters, map.svg (HazardFigure.hpp) and summary.json into outDir (which must be new or empty). InputError for
 // unusable inputs, before any run.
 HazardResults runHazard(const HazardOptions& options);
 

@@ -1,0 +1,239 @@
+// Hazard maps on a DTM (libassess: GeoRaster, ReleaseArea, HazardMap, HazardRun): the rasters' values
+// against hand-computed cases, the readers against good and bad inputs, and a small run end to end.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "libassess/GeoRaster.hpp"
+#include "libassess/HazardMap.hpp"
+#include "libassess/HazardRun.hpp"
+#include "libassess/ReleaseArea.hpp"
+#include "libcommon/InputError.hpp"
+
+namespace fs = std::filesystem;
+using namespace sylva::assess;
+
+namespace {
+
+// Lambert-93 (EPSG:2154): a projected CRS a French DTM comes in.
+const char* const kLambert93Prj =
+    R"(PROJCS["RGF93 v1 / Lambert-93",GEOGCS["RGF93 v1",DATUM["Reseau_Geodesique_Francais_1993_v1",SPHEROID["GRS 1980",6378137,298.257222101]],PRIMEM["Greenwich",0],UNIT["degree",0.0174532925199433]],PROJECTION["Lambert_Conformal_Conic_2SP"],PARAMETER["latitude_of_origin",46.5],PARAMETER["central_meridian",3],PARAMETER["standard_parallel_1",49],PARAMETER["standard_parallel_2",44],PARAMETER["false_easting",700000],PARAMETER["false_northing",6600000],UNIT["metre",1]])";
+
+class Hazard : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("sylvarock-hazard-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    std::string write(const std::string& name, const std::string& text) const {
+        std::ofstream(dir_ / name) << text;
+        return (dir_ / name).string();
+    }
+    // An ESRI ASCII DTM: `cols` x `rows` cells of `cell` m, south-west corner (x0, y0), height z(col, row)
+    // with row 0 the northernmost (as the file is written).
+    template <class Z>
+    std::string dtm(const std::string& name, int cols, int rows, double cell, double x0, double y0, Z z, bool prj = false) const {
+        std::string text = "ncols " + std::to_string(cols) + "\nnrows " + std::to_string(rows) + "\nxllcorner " + std::to_string(x0) +
+                           "\nyllcorner " + std::to_string(y0) + "\ncellsize " + std::to_string(cell) + "\nNODATA_value -9999\n";
+        for (int r = 0; r < rows; ++r) {
+            for (int c = 0; c < cols; ++c) text += std::to_string(z(c, r)) + " ";
+            text += "\n";
+        }
+        if (prj) write(name.substr(0, name.size() - 4) + ".prj", kLambert93Prj);
+        return write(name, text);
+    }
+    std::string polygon(const std::string& name, double x0, double y0, double x1, double y1, const std::string& crs = "") const {
+        const auto p = [](double x, double y) { return "[" + std::to_string(x) + ", " + std::to_string(y) + "]"; };
+        return write(name, "{\"type\": \"FeatureCollection\"," + crs + " \"features\": [{\"type\": \"Feature\", \"properties\": {}, "
+                           "\"geometry\": {\"type\": \"Polygon\", \"coordinates\": [[" + p(x0, y0) + ", " + p(x1, y0) + ", " + p(x1, y1) +
+                           ", " + p(x0, y1) + ", " + p(x0, y0) + "]]}}]}");
+    }
+    template <class F>
+    std::string errorOf(F f) const {
+        try {
+            f();
+        } catch (const sylva::InputError& e) {
+            return e.what();
+        }
+        return "(no error)";
+    }
+    fs::path dir_;
+};
+
+TEST_F(Hazard, DtmKeepsItsGridAndItsHeightsNorthUp) {
+    // Height 10 * column + row (row 0 north): the simulator's grid counts rows from the south.
+    const Dtm d = readDtm(dtm("d.asc", 4, 3, 2.0, 1000, 2000, [](int c, int r) { return 10.0 * c + r; }, true));
+    EXPECT_EQ(d.grid.columns, 4);
+    EXPECT_EQ(d.grid.rows, 3);
+    EXPECT_DOUBLE_EQ(d.grid.geoTransform[0], 1000);
+    EXPECT_DOUBLE_EQ(d.grid.geoTransform[3], 2006);  // the north edge
+    EXPECT_DOUBLE_EQ(d.grid.cellSize(), 2);
+    EXPECT_EQ(crsName(d.grid.crsWkt), "RGF93 v1 / Lambert-93");
+    const Eigen::Vector2d northWest = d.grid.centre(0, 0), southEast = d.grid.centre(3, 2);
+    EXPECT_DOUBLE_EQ(d.elevation.height(northWest.x(), northWest.y()), 0);
+    EXPECT_DOUBLE_EQ(d.elevation.height(southEast.x(), southEast.y()), 32);
+    int c = 0, r = 0;
+    ASSERT_TRUE(d.grid.cellOf(1003.9, 2005.9, c, r));
+    EXPECT_EQ(c, 1);
+    EXPECT_EQ(r, 0);
+    EXPECT_FALSE(d.grid.cellOf(999.9, 2003, c, r));
+}
+
+TEST_F(Hazard, DtmReadingErrorsNameTheFile) {
+    EXPECT_NE(errorOf([&] { readDtm((dir_ / "none.tif").string()); }).find("none.tif: cannot read it as a raster"), std::string::npos);
+    const std::string rect = write("rect.asc", "ncols 3\nnrows 2\nxllcorner 0\nyllcorner 0\ndx 2\ndy 3\nNODATA_value -9999\n1 2 3\n4 5 6\n");
+    EXPECT_NE(errorOf([&] { readDtm(rect); }).find("square cells"), std::string::npos) << errorOf([&] { readDtm(rect); });
+}
+
+TEST_F(Hazard, GeoTiffRoundTripKeepsValuesGridAndNoData) {
+    const Dtm d = readDtm(dtm("d.asc", 3, 2, 5.0, 600000, 5100000, [](int c, int r) { return c + 10.0 * r; }, true));
+    const std::string tif = (dir_ / "out.tif").string();
+    writeGeoTiff(tif, d.grid, {0.5f, 1, 2, 3, -9999, 5}, -9999, "test");
+    const Dtm back = readDtm(tif);
+    EXPECT_EQ(back.grid.geoTransform, d.grid.geoTransform);
+    EXPECT_TRUE(sameCrs(back.grid.crsWkt, d.grid.crsWkt));
+    const auto at = [&](int c, int r) { const Eigen::Vector2d p = back.grid.centre(c, r); return back.elevation.height(p.x(), p.y()); };
+    EXPECT_DOUBLE_EQ(at(0, 0), 0.5);
+    EXPECT_DOUBLE_EQ(at(2, 1), 5);
+    EXPECT_THROW(at(1, 1), sylva::InputError);  // NODATA read back as no value
+}
+
+TEST_F(Hazard, ReleaseCellsAreTheCellsWhoseCentreIsInside) {
+    const Dtm d = readDtm(dtm("d.asc", 6, 4, 5.0, 0, 0, [](int c, int) { return 100.0 - 3 * c; }));
+    // Cell centres at 2.5, 7.5, 12.5, ... m: x in [4, 16] holds columns 1 and 2 (7.5, 12.5), y in [6, 14]
+    // the centres 12.5 and 7.5, rows 1 and 2 counted from the north (the grid's top is y = 20).
+    const auto cells = readReleaseCells(polygon("r.geojson", 4, 6, 16, 14), d);
+    ASSERT_EQ(cells.size(), 4u);
+    EXPECT_EQ(cells[0].column, 1);
+    EXPECT_EQ(cells[0].row, 1);
+    EXPECT_EQ(cells[3].column, 2);
+    EXPECT_EQ(cells[3].row, 2);
+}
+
+TEST_F(Hazard, ReleaseErrorsSayWhatIsWrong) {
+    const Dtm d = readDtm(dtm("d.asc", 6, 4, 5.0, 700000, 6600000, [](int c, int) { return 100.0 - 3 * c; }, true));
+    EXPECT_NE(errorOf([&] { readReleaseCells(polygon("far.geojson", 800000, 6700000, 800010, 6700010), d); }).find("cover no cell centre"), std::string::npos);
+    EXPECT_NE(errorOf([&] { readReleaseCells(polygon("tiny.geojson", 700001, 6600001, 700002, 6600002), d); }).find("smaller than a cell"),
+              std::string::npos);
+    const std::string wgs = polygon("wgs.geojson", 3, 46, 3.1, 46.1);  // degrees: GeoJSON's own CRS, not the DTM's
+    EXPECT_NE(errorOf([&] { readReleaseCells(wgs, d); }).find("reproject it"), std::string::npos) << errorOf([&] { readReleaseCells(wgs, d); });
+    const std::string points = write("p.geojson", R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {},
+        "geometry": {"type": "Point", "coordinates": [700010, 6600010]}}]})");
+    EXPECT_NE(errorOf([&] { readReleaseCells(points, d); }).find("no polygon"), std::string::npos);
+    const Dtm holed = readDtm(dtm("h.asc", 6, 4, 5.0, 0, 0, [](int c, int r) { return c == 1 && r == 1 ? -9999.0 : 100.0 - 3 * c; }));
+    EXPECT_NE(errorOf([&] { readReleaseCells(polygon("r.geojson", 4, 6, 16, 14), holed); }).find("NODATA hole"), std::string::npos);
+}
+
+// Two blocks by hand: passing counts, the probability, deposits, and the 95th percentile with
+// GSL's linear interpolation (10 and 20 kJ: 10 + 0.95 x 10 = 19.5).
+TEST_F(Hazard, MapCountsPassagesDepositsAndPercentiles) {
+    RasterGrid g;
+    g.columns = 3;
+    g.rows = 1;
+    g.geoTransform = {0, 1, 0, 1, 0, -1};
+    HazardMap map(g);
+    BlockTrace a, b;
+    a.passages = {{0, 10, 1}, {1, 8, 0.5}};
+    a.depositCell = 1;
+    b.passages = {{0, 20, 3}, {1, 12, 0.4}, {2, 4, 0.2}};
+    b.depositCell = 2;
+    b.impactCells = {1, 1};
+    map.add(a);
+    map.add(b);
+    EXPECT_EQ(map.passingCount(), (std::vector<float>{2, 2, 1}));
+    EXPECT_EQ(map.reachProbability(), (std::vector<float>{1, 1, 0.5}));
+    EXPECT_EQ(map.deposits(), (std::vector<float>{0, 1, 1}));
+    EXPECT_EQ(map.treeImpacts(), (std::vector<float>{0, 2, 0}));
+    EXPECT_FLOAT_EQ(map.energyP95Kj(-1)[0], 19.5f);
+    EXPECT_FLOAT_EQ(map.heightP95M(-1)[0], 1 + 0.95f * 2);
+    EXPECT_FLOAT_EQ(map.energyP95Kj(-1)[2], 4);
+    HazardMap empty(g);
+    EXPECT_EQ(empty.energyP95Kj(-1), (std::vector<float>{-1, -1, -1}));
+}
+
+// A block moving 12 m east over flat ground at z = 0, 1 m up, its energy falling from 30 to 18 kJ:
+// it crosses cells 0, 1 and 2 of a 5 m grid; in each the largest energy is where it entered.
+TEST_F(Hazard, TraceWalksThePathBetweenSamples) {
+    const Dtm d = readDtm(dtm("flat.asc", 4, 1 + 1, 5.0, 0, 0, [](int, int) { return 0.0; }));
+    sylva::dem::RunResult run;
+    run.release = {1, 7.5, 1};
+    run.stop = {13, 7.5, 1};
+    run.reason = sylva::dem::StopReason::Rest;
+    const Eigen::Vector3d still = Eigen::Vector3d::Zero();
+    run.trajectory = {{0, {1, 7.5, 1}, still, still, 30000, 0}, {1, {13, 7.5, 1}, still, still, 18000, 0}};
+    const BlockTrace t = traceRun(run, d, {});
+    ASSERT_EQ(t.passages.size(), 3u);
+    EXPECT_EQ(t.passages[0].cell, d.grid.index(0, 0));
+    EXPECT_EQ(t.passages[2].cell, d.grid.index(2, 0));
+    EXPECT_FLOAT_EQ(t.passages[0].energyKj, 30);
+    EXPECT_NEAR(t.passages[1].energyKj, 30 - 12 * (5.0 - 1) / 12, 12 * 1.25 / 12);  // entered within a quarter cell of x = 5
+    EXPECT_FLOAT_EQ(t.passages[1].heightM, 1);
+    EXPECT_EQ(t.depositCell, static_cast<long>(d.grid.index(2, 0)));
+    EXPECT_DOUBLE_EQ(t.pathLengthM, 12);
+    EXPECT_DOUBLE_EQ(t.reachM, 12);
+}
+
+// A small slope end to end with the lumped model (fast): rasters on the DTM's grid, probabilities in
+// [0, 1], every block counted in its release cell, deposits adding up to the blocks at rest, a
+// forest that shortens the reach, and the same rasters on 1 and 2 threads.
+TEST_F(Hazard, SmallSlopeEndToEnd) {
+    const std::string slope = dtm("slope.asc", 60, 20, 5.0, 0, 0, [](int c, int) { return 300.0 - 5 * c * std::tan(0.6 - 0.004 * c); });
+    const std::string release = polygon("release.geojson", 10, 40, 20, 60);
+    std::string trees = "x,y,dbh_cm\n";
+    for (int i = 0; i < 400; ++i) trees += std::to_string(60 + 7 * (i % 20) + (i / 20 % 2) * 3.5) + "," + std::to_string(5 + 4.5 * (i / 20)) + ",25\n";
+    HazardOptions o;
+    o.dtmPath = slope;
+    o.releasePath = release;
+    o.treesPath = write("trees.csv", trees);
+    o.model = sylva::dem::Model::Lumped;
+    o.runsPerCell = 25;
+    o.seed = 4;
+    o.compareBare = true;
+    o.threads = 1;
+    o.outDir = (dir_ / "one").string();
+    const HazardResults one = runHazard(o);
+    o.threads = 2;
+    o.outDir = (dir_ / "two").string();
+    runHazard(o);
+    EXPECT_EQ(one.releaseCells, 8);
+    ASSERT_EQ(one.passes.size(), 2u);
+    EXPECT_EQ(one.passes[0].blocks, 200);
+    EXPECT_GT(one.passes[0].treeImpacts, 0);
+    EXPECT_LT(one.passes[0].reachP50, one.passes[1].reachP50);  // the forest holds blocks back
+    const Dtm grid = readDtm(slope);
+    for (const char* name : {"reach_probability.tif", "passing_count.tif", "deposits.tif", "energy_p95_kj.tif", "height_p95_m.tif",
+                             "tree_impacts.tif", "protection.tif", "bare/reach_probability.tif"}) {
+        const Dtm a = readDtm((dir_ / "one" / name).string()), b = readDtm((dir_ / "two" / name).string());
+        EXPECT_EQ(a.grid.geoTransform, grid.grid.geoTransform) << name;
+        for (int r = 0; r < a.grid.rows; ++r)
+            for (int c = 0; c < a.grid.columns; ++c) {
+                const Eigen::Vector2d p = a.grid.centre(c, r);
+                double va = std::nan(""), vb = std::nan("");
+                try { va = a.elevation.height(p.x(), p.y()); } catch (const sylva::InputError&) {}
+                try { vb = b.elevation.height(p.x(), p.y()); } catch (const sylva::InputError&) {}
+                ASSERT_TRUE(va == vb || (std::isnan(va) && std::isnan(vb))) << name << " cell " << c << "," << r;
+            }
+    }
+    const Dtm reach = readDtm((dir_ / "one/reach_probability.tif").string()), deposits = readDtm((dir_ / "one/deposits.tif").string());
+    double depositSum = 0;
+    for (int r = 0; r < reach.grid.rows; ++r)
+        for (int c = 0; c < reach.grid.columns; ++c) {
+            const Eigen::Vector2d p = reach.grid.centre(c, r);
+            const double v = reach.elevation.height(p.x(), p.y());
+            EXPECT_GE(v, 0);
+            EXPECT_LE(v, 1);
+            depositSum += deposits.elevation.height(p.x(), p.y());
+        }
+    EXPECT_DOUBLE_EQ(depositSum, static_cast<double>(one.passes[0].rest));
+    // Each release cell sends 25 of the 200 blocks: at least that share passed through it.
+    const Eigen::Vector2d releaseCell = reach.grid.centre(2, 8);
+    EXPECT_GE(reach.elevation.height(releaseCell.x(), releaseCell.y()), 25.0 / 200 - 1e-6);
+    EXPECT_NE(errorOf([&] { o.outDir = (dir_ / "one").string(); runHazard(o); }).find("not an empty folder"), std::string::npos);
+}
+
+}  // namespace

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <mutex>
 
+#include "GdalSupport.hpp"
 #include "libcommon/InputError.hpp"
 
 namespace sylva::assess {
@@ -59,12 +60,7 @@ Dtm readDtm(const std::string& path) {
     if (!(t[1] > 0) || std::fabs(t[5] + t[1]) > 1e-9 * t[1])
         throw InputError(path, 0, "cells of " + readableNumber(t[1]) + " x " + readableNumber(-t[5]) +
                                       " m: sylvarock needs square cells, north up (gdalwarp -tr D D)");
-    if (const OGRSpatialReference* crs = ds->GetSpatialRef()) {
-        char* wkt = nullptr;
-        crs->exportToWkt(&wkt);
-        g.crsWkt = wkt ? wkt : "";
-        CPLFree(wkt);
-    }
+    g.crsWkt = wktOf(ds->GetSpatialRef());
     GDALRasterBand* band = ds->GetRasterBand(1);
     int hasNoData = 0;
     const double noData = band->GetNoDataValue(&hasNoData);

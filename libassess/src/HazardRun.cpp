@@ -1,8 +1,6 @@
 #include "libassess/HazardRun.hpp"
 
-#include <gdal_priv.h>
 #include <nlohmann/json.hpp>
-#include <ogrsf_frmts.h>
 
 #include <atomic>
 #include <filesystem>
@@ -10,6 +8,7 @@
 #include <mutex>
 #include <unordered_map>
 
+#include "GdalSupport.hpp"
 #include "libassess/GeoRaster.hpp"
 #include "libassess/HazardFigure.hpp"
 #include "libassess/HazardMap.hpp"
@@ -41,24 +40,11 @@ bool endsWith(const std::string& s, const std::string& tail) {
 // Trees from a point layer: each point a stem, its DBH in the field dbh_cm; allometry from the DBH
 // (Eqs. 11-13), as for a CSV without it.
 stand::Forest readTreeLayer(const std::string& path, const Dtm& dtm) {
-    initGdal();
-    CPLErrorReset();
-    GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
-    if (!ds) throw InputError(path, 0, "cannot read it as a vector layer (" + gdalLastError() + ")");
+    GDALDatasetUniquePtr ds = openVectorFile(path);
     stand::Forest forest;
     forest.source = path;
     for (OGRLayer* layer : ds->GetLayers()) {
-        const OGRSpatialReference* crs = layer->GetSpatialRef();
-        std::string wkt;
-        if (crs) {
-            char* w = nullptr;
-            crs->exportToWkt(&w);
-            wkt = w ? w : "";
-            CPLFree(w);
-        }
-        if (!sameCrs(wkt, dtm.grid.crsWkt))
-            throw InputError(path, 0, "layer '" + std::string(layer->GetName()) + "' is in " + crsName(wkt) + ", the DTM in " +
-                                          crsName(dtm.grid.crsWkt) + ": reproject it (ogr2ogr -t_srs)");
+        requireDtmCrs(*layer, path, dtm);
         const int dbhField = layer->GetLayerDefn()->GetFieldIndex("dbh_cm");
         if (dbhField < 0) throw InputError(path, 0, "layer '" + std::string(layer->GetName()) + "' has no field dbh_cm (each tree's DBH in cm)");
         for (auto& feature : *layer) {

@@ -1,49 +1,20 @@
 #include "libassess/ReleaseArea.hpp"
 
-#include <gdal_priv.h>
-#include <ogrsf_frmts.h>
-
 #include <algorithm>
 #include <cmath>
 #include <memory>
 
+#include "GdalSupport.hpp"
 #include "libcommon/InputError.hpp"
 
 namespace sylva::assess {
 
-namespace {
-
-std::string layerCrs(OGRLayer& layer) {
-    const OGRSpatialReference* crs = layer.GetSpatialRef();
-    if (!crs) return "";
-    char* wkt = nullptr;
-    crs->exportToWkt(&wkt);
-    std::string s = wkt ? wkt : "";
-    CPLFree(wkt);
-    return s;
-}
-
-// A GeoJSON without a "crs" member is WGS 84 by its standard (RFC 7946), and GDAL says so; when its
-// coordinates cannot be degrees, it was written in a projected CRS without saying which.
-bool degreesImpossible(const OGREnvelope& e) { return e.MinX < -180 || e.MaxX > 180 || e.MinY < -90 || e.MaxY > 90; }
-
-}  // namespace
-
 std::vector<ReleaseCell> readReleaseCells(const std::string& path, const Dtm& dtm) {
-    initGdal();
-    CPLErrorReset();
-    GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
-    if (!ds) throw InputError(path, 0, "cannot read it as a vector layer (" + gdalLastError() + ")");
+    GDALDatasetUniquePtr ds = openVectorFile(path);
     const RasterGrid& grid = dtm.grid;
     std::vector<std::unique_ptr<OGRGeometry>> polygons;
     for (OGRLayer* layer : ds->GetLayers()) {
-        const std::string crs = layerCrs(*layer);
-        OGREnvelope extent;
-        const bool hasExtent = layer->GetExtent(&extent, TRUE) == OGRERR_NONE;
-        const bool mislabelledGeoJson = hasExtent && degreesImpossible(extent) && crsName(crs) == "WGS 84";
-        if (!mislabelledGeoJson && !sameCrs(crs, grid.crsWkt))
-            throw InputError(path, 0, "layer '" + std::string(layer->GetName()) + "' is in " + crsName(crs) + ", the DTM (" + dtm.path +
-                                          ") in " + crsName(grid.crsWkt) + ": reproject it (ogr2ogr -t_srs) to the DTM's CRS");
+        requireDtmCrs(*layer, path, dtm);
         for (auto& feature : *layer) {
             const OGRGeometry* g = feature->GetGeometryRef();
             if (!g) continue;

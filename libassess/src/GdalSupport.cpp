@@ -1,0 +1,36 @@
+#include "GdalSupport.hpp"
+
+#include <cpl_conv.h>
+
+#include "libcommon/InputError.hpp"
+
+namespace sylva::assess {
+
+std::string wktOf(const OGRSpatialReference* crs) {
+    if (!crs) return "";
+    char* wkt = nullptr;
+    crs->exportToWkt(&wkt);
+    std::string s = wkt ? wkt : "";
+    CPLFree(wkt);
+    return s;
+}
+
+GDALDatasetUniquePtr openVectorFile(const std::string& path) {
+    initGdal();
+    CPLErrorReset();
+    GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
+    if (!ds) throw InputError(path, 0, "cannot read it as a vector layer (" + gdalLastError() + ")");
+    return ds;
+}
+
+void requireDtmCrs(OGRLayer& layer, const std::string& path, const Dtm& dtm) {
+    const std::string crs = wktOf(layer.GetSpatialRef());
+    OGREnvelope e;
+    const bool notDegrees = layer.GetExtent(&e, TRUE) == OGRERR_NONE && (e.MinX < -180 || e.MaxX > 180 || e.MinY < -90 || e.MaxY > 90);
+    if (notDegrees && crsName(crs) == "WGS 84") return;
+    if (!sameCrs(crs, dtm.grid.crsWkt))
+        throw InputError(path, 0, "layer '" + std::string(layer.GetName()) + "' is in " + crsName(crs) + ", the DTM (" + dtm.path + ") in " +
+                                      crsName(dtm.grid.crsWkt) + ": reproject it (ogr2ogr -t_srs) to the DTM's CRS");
+}
+
+}  // namespace sylva::assess

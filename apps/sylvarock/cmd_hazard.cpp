@@ -26,7 +26,7 @@ int runHazardCommand(int argc, const char* const* argv) {
         ("compare-bare", po::bool_switch(), "also run without the trees: rasters in OUT/bare/ and the forest's protection map OUT/protection.tif")
         ("model", po::value<std::string>()->default_value("dem"), "dem (the discrete element model) | lumped (the lumped-mass model, thousands of blocks per second; docs/lumped.md)")
         ("scene", po::value<std::string>(), "scene INI for the block, contact laws and stems (its terrain, if any, is replaced by --dtm); default: the built-in values")
-        ("set", po::value(&sets)->composing(), "override a scene key: --set section.key=value (repeatable; sylvarock scene --help-keys lists them)")
+        ("set", po::value(&sets)->composing(), "override a scene key: --set section.key=value (repeatable; sylvarock simulate --help-scene lists them)")
         ("seed", po::value<Seed>()->default_value(Seed{}, "1"), "seed; run i's release point and draws derive from (seed, i)")
         ("threads", po::value<int>()->default_value(0), "worker threads (0: all cores); results do not depend on it")
         ("out", po::value<std::string>(), "output folder (new or empty): reach_probability.tif, passing_count.tif, deposits.tif, energy_p95_kj.tif, height_p95_m.tif, tree_impacts.tif, summary.json");

@@ -15,11 +15,16 @@ std::string wktOf(const OGRSpatialReference* crs) {
     return s;
 }
 
+std::string unreadable(const std::string& what) {
+    const std::string why = gdalLastError();
+    return "cannot read it as " + what + (why.empty() ? " (no such file, or a format GDAL does not know)" : " (" + why + ")");
+}
+
 GDALDatasetUniquePtr openVectorFile(const std::string& path) {
     initGdal();
     CPLErrorReset();
     GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
-    if (!ds) throw InputError(path, 0, "cannot read it as a vector layer (" + gdalLastError() + ")");
+    if (!ds) throw InputError(path, 0, unreadable("vector data"));
     return ds;
 }
 

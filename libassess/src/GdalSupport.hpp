@@ -13,6 +13,9 @@ namespace sylva::assess {
 // The CRS as WKT ("" for none).
 std::string wktOf(const OGRSpatialReference* crs);
 
+// Why GDAL could not open a file as `what` ("a raster", "vector data"), for an InputError.
+std::string unreadable(const std::string& what);
+
 // InputError naming the file if OGR cannot open it as vector data.
 GDALDatasetUniquePtr openVectorFile(const std::string& path);
 

@@ -44,7 +44,7 @@ Dtm readDtm(const std::string& path) {
     initGdal();
     CPLErrorReset();
     GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
-    if (!ds) throw InputError(path, 0, "cannot read it as a raster (" + gdalLastError() + ")");
+    if (!ds) throw InputError(path, 0, unreadable("a raster"));
     if (ds->GetRasterCount() < 1) throw InputError(path, 0, "the raster has no band");
     Dtm d;
     d.path = path;

@@ -2,11 +2,14 @@
 """Markdown tables of docs/reproduction.md from an assess campaign's results.json (and its report's
 wall time, if given): PF50 per stand and structure beside the paper's reading, the rankings, the
 correlations of Fig. 12, and the virtual forests' Table 3.
-    python3 scripts/reproduction_tables.py OUT/results.json"""
+    python3 scripts/reproduction_tables.py OUT/results.json [MODEL]
+MODEL: with `assess --model both`, `lumped` reads the lumped model's results (the DEM's are the file's top level)."""
 import json
 import sys
 
 res = json.load(open(sys.argv[1]))
+if len(sys.argv) > 2 and sys.argv[2] != res.get("model", "dem"):
+    res = res[sys.argv[2]]
 rows = res["stands"]
 names = sorted({r["name"] for r in rows})
 by = {(r["name"], r["structure"]): r for r in rows}
@@ -29,9 +32,11 @@ print()
 print("| structure | stands | r(PF50, G) | r(PF50, Mean_D) | r(PF50, N) |")
 print("| --- | --- | --- | --- | --- |")
 fmt = lambda v: "—" if v is None else f"{v:+.2f}"
+def cell(c, key):  # r, and its p-value where the campaign wrote one
+    p = c.get("p_" + key)
+    return fmt(c["pearson_" + key]) + ("" if p is None else f" (p {p:.3f})")
 for c in res["correlations"]:
-    print(f"| {c['structure']} | {c['stands']} | {fmt(c['pearson_pf50_basal_area'])} | {fmt(c['pearson_pf50_mean_dbh'])} | "
-          f"{fmt(c['pearson_pf50_stems_per_ha'])} |")
+    print(f"| {c['structure']} | {c['stands']} | {cell(c, 'pf50_basal_area')} | {cell(c, 'pf50_mean_dbh')} | {cell(c, 'pf50_stems_per_ha')} |")
 if any(len(r["pf50_realisations"]) > 1 for r in rows):
     print("\nPF50 per forest realisation:\n")
     for n in names:

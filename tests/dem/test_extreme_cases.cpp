@@ -337,7 +337,7 @@ TEST(ExtremeRelease, ReleaseOutsideTheTerrainIsRefused) {
 TEST(ExtremeRelease, StemOutsideTheTerrainNamesTheForestFileAndLine) {
     const std::string path = forestCsv("stem-outside", "5,10,25\n612000,5170000,30\n");
     const std::string m = messageOf<sylva::InputError>([&] { Scene(straightSlope(35, {"forest.file=" + path})); });
-    EXPECT_TRUE(mentions(m, path + ":3: stem 2 at (612000, 5.17e+06) is outside the terrain (x in [0, 40]")) << m;
+    EXPECT_TRUE(mentions(m, path + ":3: stem 2 at (612000, 5170000) is outside the terrain (x in [0, 40]")) << m;
 }
 
 // 500 m above the ground the release is inside the terrain's footprint: the block lands at 99 m/s.

@@ -61,14 +61,21 @@ void validate(const AssessmentDesign& d) {
     std::set<std::string> names;
     for (const auto& s : d.stands)
         if (!names.insert(s.name).second) throw InputError("stand '" + s.name + "' is given twice");
-    if (d.runs < 1) throw InputError("--runs must be at least 1, got " + std::to_string(d.runs));
-    if (d.realisations < 1) throw InputError("--realisations must be at least 1, got " + std::to_string(d.realisations));
-    if (d.baselineRuns < 1) throw InputError("--baseline-runs must be at least 1, got " + std::to_string(d.baselineRuns));
     if (d.models.empty()) throw InputError("no model to run: --model dem, lumped or both");
     if (d.models.size() == 2 && d.models[0] == d.models[1]) throw InputError("model '" + dem::toString(d.models[0]) + "' is given twice");
-    if (d.lumpedRuns < 1) throw InputError("--lumped-runs must be at least 1, got " + std::to_string(d.lumpedRuns));
-    if (d.lumpedBaselineRuns < 1)
-        throw InputError("--lumped-baseline-runs must be at least 1, got " + std::to_string(d.lumpedBaselineRuns));
+    // Every campaign's run list is allocated from these counts: a typo (an extra zero or six) is
+    // refused before it is.
+    const auto requireCount = [](const char* option, int value, int most) {
+        if (value < 1) throw InputError(std::string(option) + " must be at least 1, got " + std::to_string(value));
+        if (value > most)
+            throw InputError(std::string(option) + " " + std::to_string(value) + " is above " + std::to_string(most) + ": a typo?");
+    };
+    constexpr int kMostRuns = 10000000, kMostRealisations = 10000;
+    requireCount("--runs", d.runs, kMostRuns);
+    requireCount("--realisations", d.realisations, kMostRealisations);
+    requireCount("--baseline-runs", d.baselineRuns, kMostRuns);
+    requireCount("--lumped-runs", d.lumpedRuns, kMostRuns);
+    requireCount("--lumped-baseline-runs", d.lumpedBaselineRuns, kMostRuns);
 }
 
 std::string designText(const AssessmentDesign& d) {

@@ -28,9 +28,9 @@ namespace sylva::assess {
 namespace {
 
 constexpr float kNoData = -9999;
-// A trajectory sample at least this often: at 20 m/s a block moves 1 m between samples, and the trace
-// walks between them in quarter cells (HazardMap.hpp).
-constexpr double kMaxSampleInterval = 0.05;
+// A trajectory sample at least this often (a resolution: docs/hazard.md shows the rasters converging
+// as it is halved; at 0.01 s the 95th-percentile energies are within 2.5 % of those at 0.005 s).
+constexpr double kMaxSampleInterval = 0.01;
 
 bool endsWith(const std::string& s, const std::string& tail) {
     return s.size() >= tail.size() && std::equal(tail.rbegin(), tail.rend(), s.rbegin(),
@@ -108,6 +108,7 @@ HazardPass runPass(const std::string& name, const dem::Scene& scene, const Dtm& 
                 traces[i] = traceRun(r, dtm, treeAt);
             } catch (const dem::SimulationError& e) {
                 failed[i] = 1;
+                std::lock_guard<std::mutex> lock(progress);
                 if (o.onNote) o.onNote(name + " run " + std::to_string(i) + " (seed " + std::to_string(seed) + ") stopped on a numerical error and is left out: " + e.what());
             }
             std::lock_guard<std::mutex> lock(progress);

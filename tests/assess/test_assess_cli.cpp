@@ -133,6 +133,8 @@ TEST_F(AssessCli, BadInputsAreClearErrors) {
     EXPECT_NE(err_.find("--model 'rf3d': expected dem"), std::string::npos) << err_;
     EXPECT_EQ(run(smallCampaign("o") + " --model both --lumped-runs 0"), 2);
     EXPECT_NE(err_.find("--lumped-runs must be at least 1"), std::string::npos) << err_;
+    EXPECT_EQ(run(smallCampaign("o", 1000000000)), 2);
+    EXPECT_NE(err_.find("--runs 1000000000 is above 10000000: a typo?"), std::string::npos) << err_;
     EXPECT_FALSE(fs::exists(root_ / "o"));  // nothing is written before the inputs are known to be good
 }
 

@@ -42,7 +42,8 @@ int baselineRuns(const AssessmentDesign& design, dem::Model model);
 // "dem" | "lumped" | "both" (the --model option of assess); InputError otherwise.
 std::vector<dem::Model> parseModels(const std::string& name);
 
-// InputError for: no stand, two stands of one name, no model or one twice, any run count below 1.
+// InputError for: no stand, two stands of one name, no model or one twice, a run count below 1 or
+// above 10^7, more than 10^4 realisations.
 void validate(const AssessmentDesign& design);
 
 // The design as text, one `key = value` per line: the counts, the seed, the scene's overrides and

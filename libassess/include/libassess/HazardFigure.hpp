@@ -11,7 +11,8 @@
 namespace sylva::assess {
 
 // Hillshade of the DTM at each cell centre, in [0, 1]: the cosine between the surface's normal and
-// light from the north-west (azimuth 315 deg), 45 deg above the horizon (the GIS convention).
+// light from the north-west (azimuth 315 deg), 45 deg above the horizon (Lambertian hill shading,
+// Horn 1981, Proc. IEEE 69: 14-47; azimuth and altitude as GIS tools default to them).
 std::vector<float> hillshade(const Dtm& dtm);
 
 // `reach`: the reach probability per cell (HazardMap::reachProbability). Without gnuplot the data

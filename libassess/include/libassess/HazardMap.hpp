@@ -35,8 +35,7 @@ BlockTrace traceRun(const dem::RunResult& run, const Dtm& dtm, const std::unorde
 class HazardMap {
 public:
     explicit HazardMap(const RasterGrid& grid);
-    // Traces must be added in run order for the percentiles' inputs to be the same on any threads
-    // (the rasters do not depend on the order, but this keeps the floating-point sums identical).
+    // The rasters are counts and percentiles: they do not depend on the order traces are added in.
     void add(const BlockTrace& trace);
     long blocks() const { return blocks_; }
 

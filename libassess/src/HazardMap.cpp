@@ -39,14 +39,14 @@ BlockTrace traceRun(const dem::RunResult& run, const Dtm& dtm, const std::unorde
         const auto& a = samples[i - 1];
         const double ea = a.translationalEnergy + a.rotationalEnergy;
         const double horizontal = (b.position - a.position).head<2>().norm();
-        t.pathLengthM += horizontal;
         const int n = std::max(1, static_cast<int>(std::ceil(horizontal / step)));
         for (int k = 1; k <= n; ++k) {
             const double s = static_cast<double>(k) / n;
             visit(a.position + s * (b.position - a.position), ea + s * (eb - ea));
         }
     }
-    t.reachM = (run.stop - run.release).head<2>().norm();
+    t.pathLengthM = run.runoutAlongSlope;  // along the ground on a DTM (SurfacePath)
+    t.reachM = run.runoutHorizontal;
     int c = 0, r = 0;
     if (run.reason == dem::StopReason::Rest && grid.cellOf(run.stop.x(), run.stop.y(), c, r)) t.depositCell = static_cast<long>(grid.index(c, r));
     for (const auto& impact : run.impacts) {

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "libdem/BlockMotion.hpp"
+#include "libdem/SurfacePath.hpp"
 #include "libcommon/SeededRandom.hpp"
 #include "libcommon/InputError.hpp"
 
@@ -119,6 +120,7 @@ RunResult simulateBlock(const Scene& scene, int run, std::uint64_t seed, const R
     const RigidBody& block = motion.block();
     r.release = block.position;
     RestDetector rest(cfg.stop.restDistance, cfg.stop.restTime);
+    SurfacePath path(soil, r.release);
     double nextSample = 0, movingTime = 0, movingDistance = 0;
     bool landed = false;
     const double cpu0 = threadCpuSeconds();
@@ -132,6 +134,7 @@ RunResult simulateBlock(const Scene& scene, int run, std::uint64_t seed, const R
         const Vec3& p = block.position;
         const double speed = block.velocity.norm();
         r.maxSpeed = std::max(r.maxSpeed, speed);
+        path.moveTo(p);
         landed = landed || motion.touching();
         if (landed) {
             r.maxBounce = std::max(r.maxBounce, motion.clearance());
@@ -161,7 +164,7 @@ RunResult simulateBlock(const Scene& scene, int run, std::uint64_t seed, const R
     r.meanDt = r.duration / std::max(1L, r.steps);
     r.stop = block.position;
     r.meanSpeed = movingTime > 0 ? movingDistance / movingTime : 0;
-    r.runoutAlongSlope = soil.alongSlope(r.release.x(), r.stop.x(), r.stop.y());
+    r.runoutAlongSlope = runoutAlongSlope(soil, r.release, r.stop, path);
     r.runoutHorizontal = (r.stop - r.release).head<2>().norm();
     r.energyLineDeg = r.runoutHorizontal > 0 ? std::atan2(r.release.z() - r.stop.z(), r.runoutHorizontal) * 180 / M_PI : 0;
     r.energy = motion.energy();

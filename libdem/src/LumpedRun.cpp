@@ -6,6 +6,7 @@
 
 #include "libdem/LumpedRebound.hpp"
 #include "libdem/LumpedTreeImpact.hpp"
+#include "libdem/SurfacePath.hpp"
 #include "libcommon/SeededRandom.hpp"
 
 namespace sylva::dem {
@@ -72,6 +73,7 @@ RunResult simulateLumped(const Scene& scene, int run, std::uint64_t seed, const 
     SeededRandom rng(seed ^ 0x6C756D70ULL);  // its own stream: the release draws stay the DEM's
     Vec3 p = release.position, v = release.velocity;
     r.release = p;
+    SurfacePath path(soil, r.release);
     double t = 0, movingTime = 0, movingDistance = 0;
     bool landed = false;
     std::vector<std::uint32_t> near, hitTrees;
@@ -85,6 +87,7 @@ RunResult simulateLumped(const Scene& scene, int run, std::uint64_t seed, const 
     r.reason = StopReason::TimeLimit;
     while (t < cfg.stop.maxTime) {
         record();
+        path.moveTo(p);
         // A sub-step short enough that the track meets the ground (and the trees) only near its end.
         const double c0 = clearance(p);
         const double reachLength = std::clamp(0.5 * c0, 0.05, 1.0);
@@ -175,7 +178,7 @@ RunResult simulateLumped(const Scene& scene, int run, std::uint64_t seed, const 
     r.meanDt = r.duration / std::max(1L, r.steps);
     r.stop = p;
     r.meanSpeed = movingTime > 0 ? movingDistance / movingTime : 0;
-    r.runoutAlongSlope = soil.alongSlope(r.release.x(), r.stop.x(), r.stop.y());
+    r.runoutAlongSlope = runoutAlongSlope(soil, r.release, r.stop, path);
     r.runoutHorizontal = (r.stop - r.release).head<2>().norm();
     r.energyLineDeg = r.runoutHorizontal > 0 ? std::atan2(r.release.z() - r.stop.z(), r.runoutHorizontal) * 180 / M_PI : 0;
     return r;

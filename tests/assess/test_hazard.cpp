@@ -164,6 +164,7 @@ TEST_F(Hazard, TraceWalksThePathBetweenSamples) {
     run.release = {1, 7.5, 1};
     run.stop = {13, 7.5, 1};
     run.reason = sylva::dem::StopReason::Rest;
+    run.runoutAlongSlope = run.runoutHorizontal = 12;
     const Eigen::Vector3d still = Eigen::Vector3d::Zero();
     run.trajectory = {{0, {1, 7.5, 1}, still, still, 30000, 0}, {1, {13, 7.5, 1}, still, still, 18000, 0}};
     const BlockTrace t = traceRun(run, d, {});

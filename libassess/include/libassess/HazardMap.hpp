@@ -22,7 +22,7 @@ struct BlockTrace {
     std::vector<CellPassage> passages;   // in the order the block first entered them
     long depositCell = -1;               // where it came to rest (-1: it did not, or off the grid)
     std::vector<std::uint32_t> impactCells;  // the cell of each tree it hit
-    double pathLengthM = 0;              // horizontal length of its path, release to stop
+    double pathLengthM = 0;              // length of its path along the ground, release to stop (RunResult::runoutAlongSlope)
     double reachM = 0;                   // horizontal distance from release to stop
     dem::StopReason reason = dem::StopReason::TimeLimit;
 };

@@ -56,6 +56,7 @@ public:
     void near(const Eigen::Vector3d& p, double reach, std::vector<std::uint32_t>& out) const;
 
     double surfaceHeight(double x, double y) const;  // the macroscopic surface (profile or DTM)
+    bool onProfile() const { return profile_.has_value(); }  // a slope profile extruded sideways, not a DTM
     // Distance along the surface from x0 to x1 at cross-slope position y (the run-out measure);
     // negative when x1 < x0.
     double alongSlope(double x0, double x1, double y) const;

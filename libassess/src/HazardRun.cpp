@@ -2,24 +2,24 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
 #include <unordered_map>
 
-#include "GdalSupport.hpp"
 #include "libassess/GeoRaster.hpp"
 #include "libassess/HazardFigure.hpp"
 #include "libassess/HazardMap.hpp"
 #include "libassess/ReleaseArea.hpp"
+#include "libassess/TreePoints.hpp"
 #include "libcommon/InputError.hpp"
 #include "libcommon/SeededRandom.hpp"
 #include "libcommon/ThreadTeam.hpp"
 #include "libdem/CampaignSummary.hpp"
 #include "libdem/LumpedRun.hpp"
 #include "libdem/SimulationError.hpp"
-#include "libstand/Allometry.hpp"
 
 namespace fs = std::filesystem;
 
@@ -31,48 +31,6 @@ constexpr float kNoData = -9999;
 // A trajectory sample at least this often (a resolution: docs/hazard.md shows the rasters converging
 // as it is halved; at 0.01 s the 95th-percentile energies are within 2.5 % of those at 0.005 s).
 constexpr double kMaxSampleInterval = 0.01;
-
-bool endsWith(const std::string& s, const std::string& tail) {
-    return s.size() >= tail.size() && std::equal(tail.rbegin(), tail.rend(), s.rbegin(),
-                                                 [](char a, char b) { return std::tolower(a) == std::tolower(b); });
-}
-
-// Trees from a point layer: each point a stem, its DBH in the field dbh_cm; allometry from the DBH
-// (Eqs. 11-13), as for a CSV without it.
-stand::Forest readTreeLayer(const std::string& path, const Dtm& dtm) {
-    GDALDatasetUniquePtr ds = openVectorFile(path);
-    stand::Forest forest;
-    forest.source = path;
-    for (OGRLayer* layer : ds->GetLayers()) {
-        requireDtmCrs(*layer, path, dtm);
-        const int dbhField = layer->GetLayerDefn()->GetFieldIndex("dbh_cm");
-        if (dbhField < 0) throw InputError(path, 0, "layer '" + std::string(layer->GetName()) + "' has no field dbh_cm (each tree's DBH in cm)");
-        for (auto& feature : *layer) {
-            const OGRGeometry* g = feature->GetGeometryRef();
-            if (!g || wkbFlatten(g->getGeometryType()) != wkbPoint) continue;
-            const auto* point = g->toPoint();
-            stand::Tree t;
-            t.id = static_cast<long>(forest.trees.size() + 1);
-            t.x = point->getX();
-            t.y = point->getY();
-            t.dbhCm = feature->GetFieldAsDouble(dbhField);
-            if (!feature->IsFieldSetAndNotNull(dbhField) || !(t.dbhCm > 0) || t.dbhCm > 200)
-                throw InputError(path, 0, "feature " + std::to_string(feature->GetFID()) + ": dbh_cm " +
-                                              (feature->IsFieldSetAndNotNull(dbhField) ? readableNumber(t.dbhCm) : "missing") +
-                                              " is not a DBH in (0, 200] cm");
-            t.heightM = stand::treeHeightM(t.dbhCm);
-            t.crownLengthM = stand::crownLengthM(t.heightM);
-            t.crownMassKg = stand::crownMassKg(t.dbhCm);
-            forest.trees.push_back(t);
-        }
-    }
-    if (forest.trees.empty()) throw InputError(path, 0, "no point in the file: trees are a point layer with a dbh_cm field");
-    return forest;
-}
-
-stand::Forest readTrees(const std::string& path, const Dtm& dtm) {
-    return endsWith(path, ".csv") ? stand::readForestCsv(path) : readTreeLayer(path, dtm);
-}
 
 // Empty or new: a hazard run never mixes its rasters with someone else's files.
 void prepareOutDir(const std::string& dir) {
@@ -207,7 +165,7 @@ HazardResults runHazard(const HazardOptions& o) {
     if (config.launch.enabled) throw InputError("a single-tree launch (block.speed_m_s) has no place in a hazard map");
     config.trajectoryInterval = std::min(config.trajectoryInterval, kMaxSampleInterval);
     stand::Forest forest;
-    if (!o.treesPath.empty()) forest = readTrees(o.treesPath, dtm);
+    if (!o.treesPath.empty()) forest = readTreePoints(o.treesPath, dtm);
     if (o.compareBare && forest.trees.empty()) throw InputError("--compare-bare compares with a forest: give --trees");
     prepareOutDir(o.outDir);
 

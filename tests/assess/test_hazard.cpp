@@ -11,10 +11,13 @@
 #include "libassess/HazardMap.hpp"
 #include "libassess/HazardRun.hpp"
 #include "libassess/ReleaseArea.hpp"
+#include "libassess/TreePoints.hpp"
 #include "libcommon/InputError.hpp"
+#include "libstand/Allometry.hpp"
 
 namespace fs = std::filesystem;
 using namespace sylva::assess;
+namespace stand = sylva::stand;
 
 namespace {
 
@@ -127,6 +130,24 @@ TEST_F(Hazard, ReleaseErrorsSayWhatIsWrong) {
     EXPECT_NE(errorOf([&] { readReleaseCells(points, d); }).find("no polygon"), std::string::npos);
     const Dtm holed = readDtm(dtm("h.asc", 6, 4, 5.0, 0, 0, [](int c, int r) { return c == 1 && r == 1 ? -9999.0 : 100.0 - 3 * c; }));
     EXPECT_NE(errorOf([&] { readReleaseCells(polygon("r.geojson", 4, 6, 16, 14), holed); }).find("NODATA hole"), std::string::npos);
+}
+
+TEST_F(Hazard, TreesFromAPointLayerGetTheirAllometryAndBadOnesAreRefused) {
+    const Dtm d = readDtm(dtm("d.asc", 6, 4, 5.0, 0, 0, [](int c, int) { return 100.0 - 3 * c; }));
+    const auto points = [&](const std::string& name, const std::string& properties) {
+        return write(name, R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": )" + properties +
+                               R"(, "geometry": {"type": "Point", "coordinates": [12.5, 7.5]}}]})");
+    };
+    const stand::Forest f = readTreePoints(points("t.geojson", R"({"dbh_cm": 20})"), d);
+    ASSERT_EQ(f.trees.size(), 1u);
+    EXPECT_DOUBLE_EQ(f.trees[0].x, 12.5);
+    EXPECT_DOUBLE_EQ(f.trees[0].dbhCm, 20);
+    EXPECT_DOUBLE_EQ(f.trees[0].heightM, sylva::stand::treeHeightM(20));  // Eq. 11
+    EXPECT_NE(errorOf([&] { readTreePoints(points("n.geojson", R"({"dbh": 20})"), d); }).find("no field dbh_cm"), std::string::npos);
+    EXPECT_NE(errorOf([&] { readTreePoints(points("z.geojson", R"({"dbh_cm": 0})"), d); }).find("is not a DBH in (0, 200] cm"),
+              std::string::npos);
+    const std::string csv = write("t.csv", "x,y,dbh_cm\n12.5,7.5,31\n");
+    EXPECT_DOUBLE_EQ(readTreePoints(csv, d).trees.at(0).dbhCm, 31);
 }
 
 // Two blocks by hand: passing counts, the probability, deposits, and the 95th percentile with

@@ -20,13 +20,9 @@ std::vector<float> hillshade(const Dtm& dtm) {
     for (int r = 0; r < g.rows; ++r)
         for (int c = 0; c < g.columns; ++c) {
             const Eigen::Vector2d p = g.centre(c, r);
-            try {
-                const Eigen::Vector2d dz = dtm.elevation.gradient(p.x(), p.y());
-                const Eigen::Vector3d normal = Eigen::Vector3d(-dz.x(), -dz.y(), 1).normalized();
-                shade[g.index(c, r)] = static_cast<float>(std::max(0.0, normal.dot(light)));
-            } catch (const InputError&) {
-                // NODATA: left black
-            }
+            const Eigen::Vector2d dz = dtm.elevation.gradient(p.x(), p.y());
+            const Eigen::Vector3d normal = Eigen::Vector3d(-dz.x(), -dz.y(), 1).normalized();
+            shade[g.index(c, r)] = static_cast<float>(std::max(0.0, normal.dot(light)));
         }
     return shade;
 }

@@ -31,6 +31,10 @@ constexpr float kNoData = -9999;
 // A trajectory sample at least this often (a resolution: docs/hazard.md shows the rasters converging
 // as it is halved; at 0.01 s the 95th-percentile energies are within 2.5 % of those at 0.005 s).
 constexpr double kMaxSampleInterval = 0.01;
+// Runs named on stderr when they are left out; the others are counted in summary.json.
+constexpr int kMostNotes = 10;
+// Every run's trace is kept until the pass ends (~1-5 kB each): a million runs is ~1-5 GB.
+constexpr long kMostRuns = 1000000;
 
 // Empty or new: a hazard run never mixes its rasters with someone else's files.
 void prepareOutDir(const std::string& dir) {
@@ -49,8 +53,13 @@ HazardPass runPass(const std::string& name, const dem::Scene& scene, const Dtm& 
     std::vector<char> failed(traces.size(), 0);
     std::atomic<long> next{0};
     std::mutex progress;
-    int done = 0;
+    int done = 0, notes = 0;
     const double cell = dtm.grid.cellSize();
+    const dem::SoilBed& soil = scene.soil();
+    const auto note = [&](const std::string& text) {  // under `progress`; the first few only
+        if (!o.onNote || ++notes > kMostNotes) return;
+        o.onNote(text + (notes == kMostNotes ? " (further runs left out are counted in summary.json, not named)" : ""));
+    };
     runOnThreads(threadsFor(o.threads, total), [&] {
         for (long i; (i = next++) < total;) {
             const std::uint64_t seed = dem::runSeed(o.seed, static_cast<int>(i));
@@ -59,7 +68,13 @@ HazardPass runPass(const std::string& name, const dem::Scene& scene, const Dtm& 
             const Eigen::Vector2d centre = dtm.grid.centre(cells[i / o.runsPerCell].column, cells[i / o.runsPerCell].row);
             dem::RunOptions run;
             run.recordTrajectory = true;
-            run.releaseAt = Eigen::Vector2d(centre.x() + rng.uniform(-0.5, 0.5) * cell, centre.y() + rng.uniform(-0.5, 0.5) * cell);
+            // The terrain spans the DTM's cell centres: a point drawn in an edge cell's outer half is
+            // moved onto that edge.
+            run.releaseAt = Eigen::Vector2d(std::clamp(centre.x() + rng.uniform(-0.5, 0.5) * cell, soil.xmin(), soil.xmax()),
+                                            std::clamp(centre.y() + rng.uniform(-0.5, 0.5) * cell, soil.ymin(), soil.ymax()));
+            const std::string which = name + " run " + std::to_string(i) + " (seed " + std::to_string(seed) + ", release cell column " +
+                                      std::to_string(cells[i / o.runsPerCell].column + 1) + ", row " +
+                                      std::to_string(cells[i / o.runsPerCell].row + 1) + ")";
             try {
                 const dem::RunResult r = o.model == dem::Model::Dem ? dem::simulateBlock(scene, static_cast<int>(i), seed, run)
                                                                      : dem::simulateLumped(scene, static_cast<int>(i), seed, run);
@@ -67,7 +82,13 @@ HazardPass runPass(const std::string& name, const dem::Scene& scene, const Dtm& 
             } catch (const dem::SimulationError& e) {
                 failed[i] = 1;
                 std::lock_guard<std::mutex> lock(progress);
-                if (o.onNote) o.onNote(name + " run " + std::to_string(i) + " (seed " + std::to_string(seed) + ") stopped on a numerical error and is left out: " + e.what());
+                note(which + " stopped on a numerical error and is left out: " + e.what());
+            } catch (const InputError& e) {
+                // A block that cannot start where it was drawn (inside a stem, or the ground under a
+                // steep cell): that run is left out, not the map.
+                failed[i] = 1;
+                std::lock_guard<std::mutex> lock(progress);
+                note(which + " could not start and is left out: " + e.what());
             }
             std::lock_guard<std::mutex> lock(progress);
             ++done;
@@ -102,23 +123,6 @@ HazardPass runPass(const std::string& name, const dem::Scene& scene, const Dtm& 
     return pass;
 }
 
-// Cells where the DTM has no height get NODATA in every raster.
-std::vector<float> maskNoData(std::vector<float> values, const Dtm& dtm) {
-    const RasterGrid& g = dtm.grid;
-    for (int r = 0; r < g.rows; ++r)
-        for (int c = 0; c < g.columns; ++c) {
-            const Eigen::Vector2d p = g.centre(c, r);
-            bool defined = true;
-            try {
-                dtm.elevation.requireDefined(p.x(), p.x(), p.y(), p.y());
-            } catch (const InputError&) {
-                defined = false;
-            }
-            if (!defined) values[g.index(c, r)] = kNoData;
-        }
-    return values;
-}
-
 std::vector<std::string> writeRasters(const std::string& dir, const HazardMap& map, const Dtm& dtm, bool forested) {
     fs::create_directories(dir);
     std::vector<std::pair<std::string, std::vector<float>>> rasters{
@@ -130,7 +134,7 @@ std::vector<std::string> writeRasters(const std::string& dir, const HazardMap& m
     if (forested) rasters.push_back({"tree_impacts.tif", map.treeImpacts()});
     std::vector<std::string> names;
     for (auto& [name, values] : rasters) {
-        writeGeoTiff((fs::path(dir) / name).string(), dtm.grid, maskNoData(std::move(values), dtm), kNoData, name.substr(0, name.size() - 4));
+        writeGeoTiff((fs::path(dir) / name).string(), dtm.grid, values, kNoData, name.substr(0, name.size() - 4));
         names.push_back(name);
     }
     return names;
@@ -150,10 +154,15 @@ nlohmann::ordered_json passJson(const HazardPass& p) {
 HazardResults runHazard(const HazardOptions& o) {
     if (o.runsPerCell < 1) throw InputError("--runs-per-cell must be at least 1, got " + std::to_string(o.runsPerCell));
     const Dtm dtm = readDtm(o.dtmPath);
+    if (const long holes = dtm.elevation.noDataCells())
+        throw InputError(o.dtmPath, 0, "the DTM has " + std::to_string(holes) + " NODATA cell(s); sylvarock hazard builds its soil over the " +
+                                           "whole DTM: fill them (gdal_fillnodata.py) or crop the DTM to where it has heights (gdalwarp -te)");
     const std::vector<ReleaseCell> cells = readReleaseCells(o.releasePath, dtm);
     const long total = static_cast<long>(cells.size()) * o.runsPerCell;
-    if (total > 100000000) throw InputError("--runs-per-cell " + std::to_string(o.runsPerCell) + " on " + std::to_string(cells.size()) +
-                                            " release cells is " + std::to_string(total) + " runs: more than 10^8");
+    if (total > kMostRuns)
+        throw InputError("--runs-per-cell " + std::to_string(o.runsPerCell) + " on " + std::to_string(cells.size()) + " release cells is " +
+                         std::to_string(total) + " runs, more than the " + std::to_string(kMostRuns) +
+                         " a pass keeps in memory: fewer runs per cell, or split the release area");
     dem::SceneConfig config = o.sceneFile.empty() ? dem::sceneFromOverrides(o.sceneOverrides) : dem::loadScene(o.sceneFile, o.sceneOverrides);
     if (!config.terrain.profile.empty() || !config.terrain.dtm.empty()) {
         if (o.onNote) o.onNote("the scene's terrain (" + (config.terrain.profile.empty() ? config.terrain.dtm : config.terrain.profile) +
@@ -177,7 +186,7 @@ HazardResults runHazard(const HazardOptions& o) {
     HazardMap map(dtm.grid);
     results.passes.push_back(runPass(forested ? "forest" : "bare", scene, dtm, cells, o, map));
     results.rasters = writeRasters(o.outDir, map, dtm, forested);
-    const FigureSet figure = drawHazardMap(o.outDir, dtm, maskNoData(map.reachProbability(), dtm), scene.forest());
+    const FigureSet figure = drawHazardMap(o.outDir, dtm, map.reachProbability(), scene.forest());
     results.figureWarning = figure.warning;
     if (o.compareBare) {
         const dem::Scene bare(config, dtm.elevation);
@@ -188,7 +197,7 @@ HazardResults runHazard(const HazardOptions& o) {
         std::vector<float> protection = bareMap.reachProbability();
         const std::vector<float> withForest = map.reachProbability();
         for (std::size_t i = 0; i < protection.size(); ++i) protection[i] -= withForest[i];
-        writeGeoTiff(o.outDir + "/protection.tif", dtm.grid, maskNoData(std::move(protection), dtm), kNoData, "protection");
+        writeGeoTiff(o.outDir + "/protection.tif", dtm.grid, protection, kNoData, "protection");
         results.rasters.push_back("protection.tif");
     }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 
 #include "GdalSupport.hpp"
 #include "libcommon/InputError.hpp"
@@ -16,34 +17,46 @@ bool endsWith(const std::string& s, const std::string& tail) {
                                                  [](char a, char b) { return std::tolower(a) == std::tolower(b); });
 }
 
-// Trees from a point layer: each point a stem, its DBH in the field dbh_cm; allometry from the DBH
-// (Eqs. 11-13), as for a CSV without it.
+// Trees from the point layers of a file: each point a stem (each point of a multipoint too), its DBH
+// in the field dbh_cm; allometry from the DBH (Eqs. 11-13), as for a CSV without it. Layers without
+// points (a GeoPackage's style table, a polygon layer) are passed over.
 stand::Forest readTreeLayer(const std::string& path, const Dtm& dtm) {
     GDALDatasetUniquePtr ds = openVectorFile(path);
     stand::Forest forest;
     forest.source = path;
+    const auto add = [&](const OGRPoint& point, const OGRFeature& feature, int dbhField) {
+        stand::Tree t;
+        t.id = static_cast<long>(forest.trees.size() + 1);
+        t.x = point.getX();
+        t.y = point.getY();
+        t.dbhCm = feature.GetFieldAsDouble(dbhField);
+        if (!feature.IsFieldSetAndNotNull(dbhField) || !(t.dbhCm > 0) || t.dbhCm > 200)
+            throw InputError(path, 0, "feature " + std::to_string(feature.GetFID()) + ": dbh_cm " +
+                                          (feature.IsFieldSetAndNotNull(dbhField) ? readableNumber(t.dbhCm) : "missing") +
+                                          " is not a DBH in (0, 200] cm");
+        if (!std::isfinite(t.x) || !std::isfinite(t.y)) throw InputError(path, 0, "feature " + std::to_string(feature.GetFID()) + ": a point without coordinates");
+        t.heightM = stand::treeHeightM(t.dbhCm);
+        t.crownLengthM = stand::crownLengthM(t.heightM);
+        t.crownMassKg = stand::crownMassKg(t.dbhCm);
+        forest.trees.push_back(t);
+    };
     for (OGRLayer* layer : ds->GetLayers()) {
-        requireDtmCrs(*layer, path, dtm);
+        if (layer->GetGeomType() == wkbNone) continue;
         const int dbhField = layer->GetLayerDefn()->GetFieldIndex("dbh_cm");
-        if (dbhField < 0) throw InputError(path, 0, "layer '" + std::string(layer->GetName()) + "' has no field dbh_cm (each tree's DBH in cm)");
+        const std::size_t before = forest.trees.size();
         for (auto& feature : *layer) {
             const OGRGeometry* g = feature->GetGeometryRef();
-            if (!g || wkbFlatten(g->getGeometryType()) != wkbPoint) continue;
-            const auto* point = g->toPoint();
-            stand::Tree t;
-            t.id = static_cast<long>(forest.trees.size() + 1);
-            t.x = point->getX();
-            t.y = point->getY();
-            t.dbhCm = feature->GetFieldAsDouble(dbhField);
-            if (!feature->IsFieldSetAndNotNull(dbhField) || !(t.dbhCm > 0) || t.dbhCm > 200)
-                throw InputError(path, 0, "feature " + std::to_string(feature->GetFID()) + ": dbh_cm " +
-                                              (feature->IsFieldSetAndNotNull(dbhField) ? readableNumber(t.dbhCm) : "missing") +
-                                              " is not a DBH in (0, 200] cm");
-            t.heightM = stand::treeHeightM(t.dbhCm);
-            t.crownLengthM = stand::crownLengthM(t.heightM);
-            t.crownMassKg = stand::crownMassKg(t.dbhCm);
-            forest.trees.push_back(t);
+            const auto type = g ? wkbFlatten(g->getGeometryType()) : wkbNone;
+            if (type != wkbPoint && type != wkbMultiPoint) continue;
+            if (dbhField < 0)
+                throw InputError(path, 0, "layer '" + std::string(layer->GetName()) + "' has points but no field dbh_cm (each tree's DBH in cm)");
+            if (type == wkbPoint)
+                add(*g->toPoint(), *feature, dbhField);
+            else
+                for (const OGRPoint* point : *g->toMultiPoint()) add(*point, *feature, dbhField);
         }
+        // After the loop: the CRS check reads the layer's extent, which restarts its reading.
+        if (forest.trees.size() > before) requireDtmCrs(*layer, path, dtm);
     }
     if (forest.trees.empty()) throw InputError(path, 0, "no point in the file: trees are a point layer with a dbh_cm field");
     return forest;

@@ -207,11 +207,15 @@ ElevationGrid ElevationGrid::fromValues(int columns, int rows, double x0, double
     return g;
 }
 
+long ElevationGrid::noDataCells() const {
+    return static_cast<long>(std::count_if(z_.begin(), z_.end(), [](double v) { return std::isnan(v); }));
+}
+
 void ElevationGrid::failNoData(int col, int row) const {
     if (rowLine_.empty())
         throw InputError(source_, 0,
                          "cell (column " + std::to_string(col + 1) + ", row " + std::to_string(nrows_ - row) +
-                             " from the north-west) is NODATA, but the terrain needs it (cell centre x = " + std::to_string(x0_ + col * cell_) +
+                             ", counted from 1 at the north-west corner) is NODATA, but the terrain needs it (cell centre x = " + std::to_string(x0_ + col * cell_) +
                              ", y = " + std::to_string(y0_ + row * cell_) + ")");
     throw InputError(source_, rowLine_[row],
                      "value " + std::to_string(col + 1) + " is NODATA, but the terrain needs it (cell centre x = " +

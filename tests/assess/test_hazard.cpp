@@ -93,6 +93,24 @@ TEST_F(Hazard, DtmReadingErrorsNameTheFile) {
     EXPECT_NE(errorOf([&] { readDtm(rect); }).find("square cells"), std::string::npos) << errorOf([&] { readDtm(rect); });
 }
 
+// The simulator works in metres: a DTM in degrees is refused, and so are absurd cells.
+TEST_F(Hazard, DtmOutsideMetresIsRefused) {
+    const std::string asc = dtm("deg.asc", 3, 3, 0.0001, 5.7, 45.2, [](int, int) { return 1000.0; });
+    write("deg.prj", R"(GEOGCS["WGS 84",DATUM["WGS_1984",SPHEROID["WGS 84",6378137,298.257223563]],PRIMEM["Greenwich",0],UNIT["degree",0.0174532925199433]])");
+    EXPECT_NE(errorOf([&] { readDtm(asc); }).find("in degrees: project it"), std::string::npos) << errorOf([&] { readDtm(asc); });
+    const std::string tiny = dtm("tiny.asc", 3, 3, 0.001, 0, 0, [](int, int) { return 1.0; });
+    EXPECT_NE(errorOf([&] { readDtm(tiny); }).find("cells of 0.01 to 1000 m"), std::string::npos);
+}
+
+// A Float32 NODATA of -9999.9 is not the double -9999.9: the band's mask knows the cell has no height.
+TEST_F(Hazard, Float32NoDataIsRecognised) {
+    const Dtm d = readDtm(dtm("d.asc", 3, 2, 5.0, 0, 0, [](int c, int) { return 10.0 * c; }));
+    const std::string tif = (dir_ / "f.tif").string();
+    writeGeoTiff(tif, d.grid, {1, 2, 3, -9999.9f, 5, 6}, -9999.9, "test");
+    const Dtm back = readDtm(tif);
+    EXPECT_EQ(back.elevation.noDataCells(), 1);
+}
+
 TEST_F(Hazard, GeoTiffRoundTripKeepsValuesGridAndNoData) {
     const Dtm d = readDtm(dtm("d.asc", 3, 2, 5.0, 600000, 5100000, [](int c, int r) { return c + 10.0 * r; }, true));
     const std::string tif = (dir_ / "out.tif").string();
@@ -143,7 +161,7 @@ TEST_F(Hazard, TreesFromAPointLayerGetTheirAllometryAndBadOnesAreRefused) {
     EXPECT_DOUBLE_EQ(f.trees[0].x, 12.5);
     EXPECT_DOUBLE_EQ(f.trees[0].dbhCm, 20);
     EXPECT_DOUBLE_EQ(f.trees[0].heightM, sylva::stand::treeHeightM(20));  // Eq. 11
-    EXPECT_NE(errorOf([&] { readTreePoints(points("n.geojson", R"({"dbh": 20})"), d); }).find("no field dbh_cm"), std::string::npos);
+    EXPECT_NE(errorOf([&] { readTreePoints(points("n.geojson", R"({"dbh": 20})"), d); }).find("has points but no field dbh_cm"), std::string::npos);
     EXPECT_NE(errorOf([&] { readTreePoints(points("z.geojson", R"({"dbh_cm": 0})"), d); }).find("is not a DBH in (0, 200] cm"),
               std::string::npos);
     const std::string csv = write("t.csv", "x,y,dbh_cm\n12.5,7.5,31\n");
@@ -256,6 +274,22 @@ TEST_F(Hazard, SmallSlopeEndToEnd) {
     const Eigen::Vector2d releaseCell = reach.grid.centre(2, 8);
     EXPECT_GE(reach.elevation.height(releaseCell.x(), releaseCell.y()), 25.0 / 200 - 1e-6);
     EXPECT_NE(errorOf([&] { o.outDir = (dir_ / "one").string(); runHazard(o); }).find("not an empty folder"), std::string::npos);
+
+    // Release cells on the DTM's edge: points drawn in their outer half are moved onto the terrain.
+    o.releasePath = polygon("edge.geojson", 0, 0, 10, 100);
+    o.treesPath.clear();
+    o.compareBare = false;
+    o.runsPerCell = 10;
+    o.outDir = (dir_ / "edge").string();
+    const HazardResults edge = runHazard(o);
+    EXPECT_EQ(edge.passes.at(0).blocks, 2 * 20 * 10);
+    EXPECT_EQ(edge.passes.at(0).failed, 0);
+
+    // A DTM with a hole is refused before anything is written.
+    o.dtmPath = dtm("holed.asc", 60, 20, 5.0, 0, 0, [](int c, int r) { return c == 50 && r == 3 ? -9999.0 : 300.0 - 5 * c; });
+    o.outDir = (dir_ / "holed").string();
+    EXPECT_NE(errorOf([&] { runHazard(o); }).find("the DTM has 1 NODATA cell(s)"), std::string::npos);
+    EXPECT_FALSE(fs::exists(dir_ / "holed"));
 }
 
 }  // namespace

@@ -17,7 +17,7 @@ public:
     static ElevationGrid readAsc(const std::string& path);
     // A grid read by someone else (e.g. GDAL): `z` row-major with row 0 the southernmost, NaN for
     // NODATA; (x0, y0) the centre of the south-west cell. Errors about a NODATA cell then name the
-    // cell (column and row from the north-west, as GIS tools count) in `source`.
+    // cell (column and row counted from 1 at the north-west corner) in `source`.
     // Throws std::invalid_argument on fewer than 2 x 2 cells, a size mismatch or a cell size <= 0.
     static ElevationGrid fromValues(int columns, int rows, double x0, double y0, double cellSize, std::vector<double> z,
                                     std::string source);
@@ -34,6 +34,7 @@ public:
     // in [x0, x1] x [y0, y1] is NODATA; std::invalid_argument if a bound is not finite.
     void requireDefined(double x0, double x1, double y0, double y1) const;
 
+    long noDataCells() const;  // how many cells have no height
     double xmin() const { return x0_; }
     double xmax() const { return x0_ + (ncols_ - 1) * cell_; }
     double ymin() const { return y0_; }

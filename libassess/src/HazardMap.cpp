@@ -58,8 +58,7 @@ BlockTrace traceRun(const dem::RunResult& run, const Dtm& dtm, const std::unorde
 }
 
 HazardMap::HazardMap(const RasterGrid& grid)
-    : grid_(grid),
-      passing_(static_cast<std::size_t>(grid.columns) * grid.rows, 0),
+    : passing_(static_cast<std::size_t>(grid.columns) * grid.rows, 0),
       deposits_(passing_.size(), 0),
       impacts_(passing_.size(), 0),
       energy_(passing_.size()),

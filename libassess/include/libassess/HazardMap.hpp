@@ -49,7 +49,6 @@ public:
     std::vector<float> heightP95M(float noData) const;
 
 private:
-    RasterGrid grid_;
     long blocks_ = 0;
     std::vector<float> passing_, deposits_, impacts_;
     std::vector<std::vector<float>> energy_, height_;  // per cell, one value per block that passed

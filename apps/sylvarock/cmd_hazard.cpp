@@ -23,6 +23,9 @@ int runHazardCommand(int argc, const char* const* argv) {
         ("release", po::value<std::string>(), "release area: polygons (GeoJSON, GeoPackage, Shapefile, ...) in the DTM's CRS; every DTM cell whose centre is inside releases blocks")
         ("runs-per-cell", po::value<int>()->default_value(10), "N: blocks released from each release cell (at a uniform point of the cell, random orientation)")
         ("trees", po::value<std::string>(), "trees: CSV x,y,dbh_cm in the DTM's CRS (or a sylvarock forest file), or a point layer with a dbh_cm field")
+        ("stands", po::value<std::string>(), "instead of --trees: stand polygons in the DTM's CRS with fields `stand` (an inventory prefix, e.g. "
+                   "../stands/MO1, looked up beside the file, then from here) and `structure` (A or NA); a virtual forest of each stand is drawn "
+                   "inside its polygon (seeded by --seed) and written to OUT/forest.csv")
         ("compare-bare", po::bool_switch(), "also run without the trees: rasters in OUT/bare/ and the forest's protection map OUT/protection.tif")
         ("model", po::value<std::string>()->default_value("dem"), "dem (the discrete element model) | lumped (the lumped-mass model, thousands of blocks per second; docs/lumped.md)")
         ("scene", po::value<std::string>(), "scene INI for the block, contact laws and stems (its terrain, if any, is replaced by --dtm); default: the built-in values")
@@ -32,7 +35,7 @@ int runHazardCommand(int argc, const char* const* argv) {
         ("out", po::value<std::string>(), "output folder (new or empty): reach_probability.tif, passing_count.tif, deposits.tif, energy_p95_kj.tif, height_p95_m.tif, tree_impacts.tif, summary.json");
     po::variables_map vm;
     if (!parse(argc, argv, o, vm,
-               "sylvarock hazard --dtm DTM --release RELEASE.geojson --runs-per-cell N --out DIR [--trees POINTS] [--compare-bare] "
+               "sylvarock hazard --dtm DTM --release RELEASE.geojson --runs-per-cell N --out DIR [--trees POINTS | --stands POLYGONS] [--compare-bare] "
                "[--model dem|lumped] [--seed S] [--threads T]",
                "  sylvarock hazard --dtm data/hazard/slope.tif --release data/hazard/release.geojson --trees data/hazard/trees.csv \\\n"
                "      --runs-per-cell 5 --compare-bare --seed 1 --out out/hazard\n"
@@ -44,6 +47,7 @@ int runHazardCommand(int argc, const char* const* argv) {
     h.dtmPath = vm["dtm"].as<std::string>();
     h.releasePath = vm["release"].as<std::string>();
     if (vm.count("trees")) h.treesPath = vm["trees"].as<std::string>();
+    if (vm.count("stands")) h.standsPath = vm["stands"].as<std::string>();
     if (vm.count("scene")) h.sceneFile = vm["scene"].as<std::string>();
     h.sceneOverrides = sets;
     h.model = dem::parseModel(vm["model"].as<std::string>());
@@ -61,6 +65,9 @@ int runHazardCommand(int argc, const char* const* argv) {
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     long failed = 0;
     std::printf("%ld release cells x %d blocks, %ld trees\n", r.releaseCells, h.runsPerCell, r.trees);
+    for (const auto& s : r.stands)
+        std::printf("stand %ld (%s, %s): %.2f ha, %ld stems (%.0f /ha)\n", s.feature, s.inventory.c_str(),
+                    s.structure == stand::ForestStructure::Aggregated ? "A" : "NA", s.areaHa, s.stems, s.areaHa > 0 ? s.stems / s.areaHa : 0.0);
     for (const auto& p : r.passes) {
         std::printf("%-6s %ld blocks: %ld at rest, %ld left the DTM, %ld at the time limit; path length p50 %.1f m, p90 %.1f m; "
                     "reach p50 %.1f m, max %.1f m; %ld tree impacts\n",

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Writes the hazard example of data/hazard/ (README, docs/hazard.md): a 5 m DTM made from the stand-in
 slope's mean shape (data/slopes/standin-smooth.csv) with a shallow gully down its middle, placed in
-RGF93 v1 / Lambert-93 (EPSG:2154) near Grenoble; a release polygon; the trees of an aggregated MO1 forest
-(sylvarock generate) moved into the same CRS. It is a made-up slope in a real CRS, not a survey.
+RGF93 v1 / Lambert-93 (EPSG:2154) near Grenoble; a release polygon; two stand polygons (an aggregated MO1
+above a random GR1 with a clearing) for `hazard --stands`; the trees of an aggregated MO1 forest
+(sylvarock generate) moved into the same CRS, for `hazard --trees`. It is a made-up slope in a real CRS, not a survey.
 
     python3 data/hazard/make_example.py build/apps/sylvarock      (needs gdal_translate, from gdal-bin)
 """
@@ -43,6 +44,19 @@ json.dump({"type": "FeatureCollection", "name": "release",
            "crs": {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::2154"}},
            "features": [{"type": "Feature", "properties": {"name": "cliff foot"}, "geometry": {"type": "Polygon", "coordinates": [ring]}}]},
           open(os.path.join(HERE, "release.geojson"), "w"), indent=1)
+
+def moved(points):
+    return [[X0 + x, Y0 + y] for x, y in points]
+upper = [(130, 5), (280, 5), (270, 100), (280, 195), (130, 195), (130, 5)]
+lower = [(280, 5), (430, 5), (430, 195), (280, 195), (270, 100), (280, 5)]
+clearing = [(340, 80), (370, 80), (370, 120), (340, 120), (340, 80)]
+json.dump({"type": "FeatureCollection", "name": "stands",
+           "crs": {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::2154"}},
+           "features": [{"type": "Feature", "properties": {"stand": "../stands/MO1", "structure": "A"},
+                         "geometry": {"type": "Polygon", "coordinates": [moved(upper)]}},
+                        {"type": "Feature", "properties": {"stand": "../stands/GR1", "structure": "NA"},
+                         "geometry": {"type": "Polygon", "coordinates": [moved(lower), moved(clearing)]}}]},
+          open(os.path.join(HERE, "stands.geojson"), "w"), indent=1)
 
 local = os.path.join(HERE, "trees-local.csv")
 subprocess.run([exe, "generate", "--stems", os.path.join(ROOT, "data/stands/MO1_stems.csv"), "--plots",

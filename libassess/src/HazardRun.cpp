@@ -173,12 +173,23 @@ HazardResults runHazard(const HazardOptions& o) {
     if (!config.forestFile.empty()) throw InputError(o.sceneFile, 0, "the scene places a forest: give the trees with --trees");
     if (config.launch.enabled) throw InputError("a single-tree launch (block.speed_m_s) has no place in a hazard map");
     config.trajectoryInterval = std::min(config.trajectoryInterval, kMaxSampleInterval);
+    if (!o.treesPath.empty() && !o.standsPath.empty())
+        throw InputError("--trees and --stands both give the forest: give one (generate the stands' forest with --stands alone, its trees are "
+                         "written to OUT/forest.csv)");
+    HazardResults results;
     stand::Forest forest;
     if (!o.treesPath.empty()) forest = readTreePoints(o.treesPath, dtm);
-    if (o.compareBare && forest.trees.empty()) throw InputError("--compare-bare compares with a forest: give --trees");
+    if (!o.standsPath.empty()) {
+        StandForest stands = readStandPolygons(o.standsPath, dtm, o.seed);
+        for (const auto& n : stands.notes)
+            if (o.onNote) o.onNote(n);
+        forest = std::move(stands.forest);
+        results.stands = std::move(stands.polygons);
+    }
+    if (o.compareBare && forest.trees.empty()) throw InputError("--compare-bare compares with a forest: give --trees or --stands");
     prepareOutDir(o.outDir);
+    if (!o.standsPath.empty()) stand::writeForestCsv(o.outDir + "/forest.csv", forest);
 
-    HazardResults results;
     results.releaseCells = static_cast<long>(cells.size());
     results.trees = static_cast<long>(forest.trees.size());
     const bool forested = !forest.trees.empty();
@@ -210,6 +221,18 @@ HazardResults runHazard(const HazardOptions& o) {
     j["model"] = dem::toString(o.model);
     j["seed"] = o.seed;
     j["trees"] = results.trees;
+    if (!o.standsPath.empty()) {
+        j["stands_file"] = o.standsPath;
+        j["stands"] = nlohmann::ordered_json::array();
+        for (const auto& st : results.stands)
+            j["stands"].push_back({{"feature", st.feature},
+                                   {"inventory", st.inventory},
+                                   {"structure", st.structure == stand::ForestStructure::Aggregated ? "A" : "NA"},
+                                   {"area_ha", st.areaHa},
+                                   {"stems", st.stems},
+                                   {"stems_per_ha", st.areaHa > 0 ? st.stems / st.areaHa : 0.0},
+                                   {"seed", st.seed}});
+    }
     for (const auto& p : results.passes) j["passes"][p.name] = passJson(p);
     j["rasters"] = results.rasters;
     std::ofstream out(o.outDir + "/summary.json");

@@ -11,9 +11,12 @@
 #include "libassess/HazardMap.hpp"
 #include "libassess/HazardRun.hpp"
 #include "libassess/ReleaseArea.hpp"
+#include "libassess/StandPolygons.hpp"
 #include "libassess/TreePoints.hpp"
 #include "libcommon/InputError.hpp"
 #include "libstand/Allometry.hpp"
+#include "libstand/Inventory.hpp"
+#include "libstand/StandCatalogue.hpp"
 
 namespace fs = std::filesystem;
 using namespace sylva::assess;
@@ -290,6 +293,120 @@ TEST_F(Hazard, SmallSlopeEndToEnd) {
     o.outDir = (dir_ / "holed").string();
     EXPECT_NE(errorOf([&] { runHazard(o); }).find("the DTM has 1 NODATA cell(s)"), std::string::npos);
     EXPECT_FALSE(fs::exists(dir_ / "holed"));
+}
+
+// Stand polygons on a flat 300 x 200 m DTM (cell centres from 2.5 to 297.5 and 2.5 to 197.5).
+class StandPolygons : public Hazard {
+protected:
+    static std::string ring(const std::vector<std::pair<double, double>>& points) {
+        std::string s = "[";
+        for (const auto& [x, y] : points) s += (s.size() > 1 ? ", [" : "[") + std::to_string(x) + ", " + std::to_string(y) + "]";
+        return s + "]";
+    }
+    // Features: {properties JSON, rings (outer, then holes)}.
+    std::string stands(const std::vector<std::pair<std::string, std::vector<std::vector<std::pair<double, double>>>>>& features) const {
+        std::string text = "{\"type\": \"FeatureCollection\", \"features\": [";
+        for (std::size_t i = 0; i < features.size(); ++i) {
+            std::string rings;
+            for (const auto& r : features[i].second) rings += (rings.empty() ? "" : ", ") + ring(r);
+            text += std::string(i ? ", " : "") + "{\"type\": \"Feature\", \"properties\": " + features[i].first +
+                    ", \"geometry\": {\"type\": \"Polygon\", \"coordinates\": [" + rings + "]}}";
+        }
+        return write("stands.geojson", text + "]}");
+    }
+    std::string flat() const { return dtm("flat.asc", 60, 40, 5.0, 0, 0, [](int, int) { return 100.0; }); }
+    static std::string mo1() { return std::string(SYLVAROCK_DATA) + "/stands/MO1"; }
+    static std::string gr1() { return std::string(SYLVAROCK_DATA) + "/stands/GR1"; }
+    static double stemsPerHa(const std::string& prefix) {
+        const stand::Inventory inventory = stand::readInventory(prefix + "_stems.csv", prefix + "_plots.csv");
+        return stand::StandCatalogue(inventory, prefix + "_stems.csv").stemsPerHa();
+    }
+};
+
+// Each polygon holds its stand's density over its area on the terrain (the generator places
+// round(N/ha x area) stems: exact), nothing in a polygon's hole, nothing outside the polygons, no two
+// stems overlapping across the shared border; the same seed draws the same forest, another seed another.
+TEST_F(StandPolygons, EachPolygonHoldsItsStandsForest) {
+    const Dtm d = readDtm(flat());
+    const std::string file =
+        stands({{"{\"stand\": \"" + mo1() + "\", \"structure\": \"A\"}", {{{10, 10}, {150, 10}, {150, 190}, {10, 190}, {10, 10}}}},
+                {"{\"stand\": \"" + gr1() + "\", \"structure\": \"NA\"}",
+                 {{{150, 10}, {290, 10}, {290, 190}, {150, 190}, {150, 10}}, {{200, 80}, {240, 80}, {240, 120}, {200, 120}, {200, 80}}}}});
+    const StandForest f = readStandPolygons(file, d, 7);
+    ASSERT_EQ(f.polygons.size(), 2u);
+    EXPECT_EQ(f.polygons[0].structure, stand::ForestStructure::Aggregated);
+    EXPECT_EQ(f.polygons[1].structure, stand::ForestStructure::Random);
+    EXPECT_NEAR(f.polygons[0].areaHa, 140.0 * 180 / 1e4, 1e-9);
+    EXPECT_NEAR(f.polygons[1].areaHa, (140.0 * 180 - 40 * 40) / 1e4, 1e-9);
+    const long placedA = std::lround(stemsPerHa(mo1()) * f.polygons[0].areaHa);
+    const long placedNA = std::lround(stemsPerHa(gr1()) * f.polygons[1].areaHa);
+    EXPECT_EQ(f.polygons[0].stems, placedA);
+    // Only stems of the second stand can be dropped, where they would overlap the first's at x = 150.
+    EXPECT_LE(f.polygons[1].stems, placedNA);
+    EXPECT_GE(f.polygons[1].stems, placedNA - 5);
+    ASSERT_EQ(static_cast<long>(f.forest.trees.size()), f.polygons[0].stems + f.polygons[1].stems);
+    for (std::size_t i = 0; i < f.forest.trees.size(); ++i) {
+        const auto& t = f.forest.trees[i];
+        EXPECT_EQ(t.id, static_cast<long>(i + 1));
+        ASSERT_TRUE(t.x >= 10 && t.x <= 290 && t.y >= 10 && t.y <= 190) << t.x << "," << t.y;
+        ASSERT_FALSE(t.x > 200 && t.x < 240 && t.y > 80 && t.y < 120) << "a stem in the clearing at " << t.x << "," << t.y;
+        EXPECT_GT(t.heightM, 0);
+    }
+    for (const auto& a : f.forest.trees)
+        for (const auto& b : f.forest.trees)
+            if (a.id < b.id && std::abs(a.x - 150) < 1 && std::abs(b.x - 150) < 1) {
+                ASSERT_GE(std::hypot(a.x - b.x, a.y - b.y), (a.dbhCm + b.dbhCm) / 200) << "stems " << a.id << " and " << b.id << " overlap";
+            }
+    // Stools of the aggregated stand keep their ids; the random stand has none.
+    long stools = 0;
+    for (const auto& t : f.forest.trees) stools += t.stool.has_value() && t.id <= f.polygons[0].stems;
+    EXPECT_GT(stools, f.polygons[0].stems / 4);
+
+    const StandForest again = readStandPolygons(file, d, 7), other = readStandPolygons(file, d, 8);
+    ASSERT_EQ(again.forest.trees.size(), f.forest.trees.size());
+    for (std::size_t i = 0; i < f.forest.trees.size(); ++i) ASSERT_EQ(again.forest.trees[i].x, f.forest.trees[i].x);
+    EXPECT_NE(other.forest.trees.front().x, f.forest.trees.front().x);
+}
+
+// A polygon reaching past the DTM is cut to the terrain (the rectangle of cell centres); the
+// inventory is found beside the vector file; no `structure` means A, said in the notes.
+TEST_F(StandPolygons, PolygonsAreCutToTheTerrainAndInventoriesFoundBesideTheFile) {
+    const Dtm d = readDtm(flat());
+    for (const char* tail : {"_stems.csv", "_plots.csv"}) fs::copy_file(mo1() + tail, dir_ / (std::string("MO1") + tail));
+    const StandForest f = readStandPolygons(stands({{"{\"stand\": \"MO1\"}", {{{-50, -50}, {100, -50}, {100, 250}, {-50, 250}, {-50, -50}}}}}), d, 1);
+    ASSERT_EQ(f.polygons.size(), 1u);
+    EXPECT_NEAR(f.polygons[0].areaHa, 97.5 * 195 / 1e4, 1e-9);
+    EXPECT_EQ(fs::path(f.polygons[0].inventory).filename(), "MO1");
+    EXPECT_EQ(f.polygons[0].structure, stand::ForestStructure::Aggregated);
+    ASSERT_FALSE(f.notes.empty());
+    EXPECT_NE(f.notes.front().find("aggregated (A)"), std::string::npos);
+    for (const auto& t : f.forest.trees) ASSERT_TRUE(t.x >= 2.5 && t.x <= 100 && t.y >= 2.5 && t.y <= 197.5);
+}
+
+TEST_F(StandPolygons, BadStandsSayWhatIsWrong) {
+    const Dtm d = readDtm(flat());
+    const std::vector<std::vector<std::pair<double, double>>> square{{{10, 10}, {100, 10}, {100, 100}, {10, 100}, {10, 10}}};
+    const auto error = [&](const std::string& properties, const std::vector<std::vector<std::pair<double, double>>>& rings) {
+        return errorOf([&] { readStandPolygons(stands({{properties, rings}}), d, 1); });
+    };
+    EXPECT_NE(error("{\"name\": \"x\"}", square).find("no field `stand`"), std::string::npos);
+    EXPECT_NE(error("{\"stand\": \"nowhere/XX\"}", square).find("stand 'nowhere/XX' has no inventory"), std::string::npos);
+    EXPECT_NE(error("{\"stand\": \"" + mo1() + "\", \"structure\": \"clumped\"}", square).find("feature 1"), std::string::npos);
+    EXPECT_NE(error("{\"stand\": \"" + mo1() + "\"}", {{{1000, 1000}, {1100, 1000}, {1100, 1100}, {1000, 1000}}}).find("outside the terrain"),
+              std::string::npos);
+    const std::string overlapping = stands({{"{\"stand\": \"" + mo1() + "\"}", square},
+                                            {"{\"stand\": \"" + gr1() + "\"}", {{{90, 10}, {200, 10}, {200, 100}, {90, 100}, {90, 10}}}}});
+    EXPECT_NE(errorOf([&] { readStandPolygons(overlapping, d, 1); }).find("overlaps feature 1 by 900 m2"), std::string::npos);
+    EXPECT_NE(errorOf([&] { readStandPolygons(write("points.geojson", "{\"type\": \"FeatureCollection\", \"features\": []}"), d, 1); })
+                  .find("no polygon"),
+              std::string::npos);
+    HazardOptions o;
+    o.dtmPath = flat();
+    o.releasePath = polygon("release.geojson", 10, 10, 20, 20);
+    o.treesPath = write("trees.csv", "x,y,dbh_cm\n50,50,20\n");
+    o.standsPath = stands({{"{\"stand\": \"" + mo1() + "\"}", square}});
+    o.outDir = (dir_ / "out").string();
+    EXPECT_NE(errorOf([&] { runHazard(o); }).find("--trees and --stands both give the forest"), std::string::npos);
 }
 
 }  // namespace

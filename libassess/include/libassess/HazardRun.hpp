@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "libassess/StandPolygons.hpp"
 #include "libdem/Campaign.hpp"
 
 namespace sylva::assess {
@@ -14,6 +15,7 @@ struct HazardOptions {
     std::string dtmPath;       // any raster GDAL reads
     std::string releasePath;   // polygons (GeoJSON, GeoPackage, Shapefile, ...)
     std::string treesPath;     // optional: CSV x,y,dbh_cm (or a forest file), or a point layer with a dbh_cm field
+    std::string standsPath;    // optional, instead of treesPath: stand polygons generating their forests (StandPolygons.hpp)
     std::string sceneFile;     // optional: block, contact laws, stems; its terrain is replaced by the DTM
     std::vector<std::string> sceneOverrides;
     dem::Model model = dem::Model::Dem;
@@ -36,6 +38,7 @@ struct HazardPass {
 struct HazardResults {
     long releaseCells = 0;
     long trees = 0;
+    std::vector<StandPolygon> stands;  // with standsPath; their forest is written to outDir/forest.csv
     std::vector<HazardPass> passes;  // the forest (or the bare slope without trees), then bare with compareBare
     std::vector<std::string> rasters;  // written, relative to outDir
     std::string figureWarning;         // why map.svg is missing (no gnuplot), empty if drawn

@@ -41,19 +41,16 @@ bool RasterGrid::cellOf(double x, double y, int& col, int& row) const {
     return true;
 }
 
-Dtm readDtm(const std::string& path) {
+GeoRaster readRaster(const std::string& path) {
     initGdal();
     CPLErrorReset();
     GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
     if (!ds) throw InputError(path, 0, unreadable("a raster"));
     if (ds->GetRasterCount() < 1) throw InputError(path, 0, "the raster has no band");
-    Dtm d;
-    d.path = path;
-    RasterGrid& g = d.grid;
+    GeoRaster raster;
+    RasterGrid& g = raster.grid;
     g.columns = ds->GetRasterXSize();
     g.rows = ds->GetRasterYSize();
-    if (g.columns < 2 || g.rows < 2)
-        throw InputError(path, 0, "a DTM of " + std::to_string(g.columns) + " x " + std::to_string(g.rows) + " cells: at least 2 x 2 are needed");
     if (ds->GetGeoTransform(g.geoTransform.data()) != CE_None)
         throw InputError(path, 0, "the raster has no georeferencing (geotransform): sylvarock needs cell size and position");
     const auto& t = g.geoTransform;
@@ -62,34 +59,47 @@ Dtm readDtm(const std::string& path) {
         throw InputError(path, 0, "cells of " + readableNumber(t[1]) + " x " + readableNumber(-t[5]) +
                                       " m: sylvarock needs square cells, north up (gdalwarp -tr D D)");
     g.crsWkt = wktOf(ds->GetSpatialRef());
+    GDALRasterBand* band = ds->GetRasterBand(1);
+    std::vector<double>& z = raster.values;
+    z.resize(static_cast<std::size_t>(g.columns) * g.rows);
+    if (band->RasterIO(GF_Read, 0, 0, g.columns, g.rows, z.data(), g.columns, g.rows, GDT_Float64, 0, 0) != CE_None)
+        throw InputError(path, 0, "cannot read its values (" + gdalLastError() + ")");
+    // The mask band says which cells hold a value: it knows the NODATA value in the band's own type
+    // (a Float32 -9999.9 is not the double -9999.9) and any mask or alpha band.
+    std::vector<GByte> valid(z.size(), 255);
+    if (!(band->GetMaskFlags() & GMF_ALL_VALID) &&
+        band->GetMaskBand()->RasterIO(GF_Read, 0, 0, g.columns, g.rows, valid.data(), g.columns, g.rows, GDT_Byte, 0, 0) != CE_None)
+        throw InputError(path, 0, "cannot read which cells hold a value (" + gdalLastError() + ")");
+    for (std::size_t i = 0; i < z.size(); ++i)
+        if (valid[i] == 0 || !std::isfinite(z[i])) z[i] = std::nan("");
+    return raster;
+}
+
+Dtm readDtm(const std::string& path) {
+    GeoRaster raster = readRaster(path);
+    Dtm d;
+    d.path = path;
+    d.grid = raster.grid;
+    const RasterGrid& g = d.grid;
+    const auto& t = g.geoTransform;
+    if (g.columns < 2 || g.rows < 2)
+        throw InputError(path, 0, "a DTM of " + std::to_string(g.columns) + " x " + std::to_string(g.rows) + " cells: at least 2 x 2 are needed");
     // The simulator works in metres: a DTM in degrees or feet would be run with cells of 1e-4 "m".
-    if (const OGRSpatialReference* crs = ds->GetSpatialRef()) {
-        if (crs->IsGeographic())
+    OGRSpatialReference crs;
+    if (!g.crsWkt.empty() && crs.importFromWkt(g.crsWkt.c_str()) == OGRERR_NONE) {
+        if (crs.IsGeographic())
             throw InputError(path, 0, "the DTM is in " + crsName(g.crsWkt) + ", in degrees: project it to a metric CRS first (gdalwarp -t_srs)");
         const char* unit = nullptr;
-        if (std::fabs(crs->GetLinearUnits(&unit) - 1) > 1e-9)
+        if (std::fabs(crs.GetLinearUnits(&unit) - 1) > 1e-9)
             throw InputError(path, 0, "the DTM's CRS counts in " + std::string(unit ? unit : "an unknown unit") +
                                           ", not metres: reproject it (gdalwarp -t_srs) to a metric CRS");
     }
     if (!(t[1] >= 0.01 && t[1] <= 1000))
         throw InputError(path, 0, "cells of " + readableNumber(t[1]) + " m: sylvarock reads DTMs with cells of 0.01 to 1000 m");
-    GDALRasterBand* band = ds->GetRasterBand(1);
-    std::vector<double> z(static_cast<std::size_t>(g.columns) * g.rows);
-    if (band->RasterIO(GF_Read, 0, 0, g.columns, g.rows, z.data(), g.columns, g.rows, GDT_Float64, 0, 0) != CE_None)
-        throw InputError(path, 0, "cannot read its heights (" + gdalLastError() + ")");
-    // The mask band says which cells hold a height: it knows the NODATA value in the band's own type
-    // (a Float32 -9999.9 is not the double -9999.9) and any mask or alpha band.
-    std::vector<GByte> valid(z.size(), 255);
-    if (!(band->GetMaskFlags() & GMF_ALL_VALID) &&
-        band->GetMaskBand()->RasterIO(GF_Read, 0, 0, g.columns, g.rows, valid.data(), g.columns, g.rows, GDT_Byte, 0, 0) != CE_None)
-        throw InputError(path, 0, "cannot read which cells hold a height (" + gdalLastError() + ")");
     // GDAL's rows run north to south, the simulator's south to north.
-    std::vector<double> south(z.size());
+    std::vector<double> south(raster.values.size());
     for (int r = 0; r < g.rows; ++r)
-        for (int c = 0; c < g.columns; ++c) {
-            const double v = z[g.index(c, r)];
-            south[static_cast<std::size_t>(g.rows - 1 - r) * g.columns + c] = valid[g.index(c, r)] == 0 || !std::isfinite(v) ? std::nan("") : v;
-        }
+        for (int c = 0; c < g.columns; ++c) south[static_cast<std::size_t>(g.rows - 1 - r) * g.columns + c] = raster.values[g.index(c, r)];
     const Eigen::Vector2d sw = g.centre(0, g.rows - 1);
     d.elevation = dem::ElevationGrid::fromValues(g.columns, g.rows, sw.x(), sw.y(), t[1], std::move(south), path);
     return d;

@@ -9,11 +9,13 @@
 
 namespace sylva::assess {
 
-std::vector<ReleaseCell> readReleaseCells(const std::string& path, const Dtm& dtm) {
-    GDALDatasetUniquePtr ds = openVectorFile(path);
+namespace {
+
+// The DTM cells whose centre lies inside one of the polygons of the vector file.
+std::vector<char> cellsInPolygons(GDALDataset& ds, const std::string& path, const Dtm& dtm) {
     const RasterGrid& grid = dtm.grid;
     std::vector<std::unique_ptr<OGRGeometry>> polygons;
-    for (OGRLayer* layer : ds->GetLayers()) {
+    for (OGRLayer* layer : ds.GetLayers()) {
         requireDtmCrs(*layer, path, dtm);
         for (auto& feature : *layer) {
             const OGRGeometry* g = feature->GetGeometryRef();
@@ -39,13 +41,53 @@ std::vector<ReleaseCell> readReleaseCells(const std::string& path, const Dtm& dt
                 if (!inside[grid.index(c, r)] && polygon->Contains(&point)) inside[grid.index(c, r)] = 1;
             }
     }
+    return inside;
+}
+
+// The DTM cells whose centre falls on a release raster's cell holding a value other than 0 (and not
+// NODATA): a Rockyfor3D-style release raster, on the DTM's grid or any other in its CRS.
+std::vector<char> cellsOnRaster(const std::string& path, const Dtm& dtm) {
+    const GeoRaster release = readRaster(path);
+    if (!sameCrs(release.grid.crsWkt, dtm.grid.crsWkt))
+        throw InputError(path, 0, "the release raster is in " + crsName(release.grid.crsWkt) + ", the DTM (" + dtm.path + ") in " +
+                                      crsName(dtm.grid.crsWkt) + ": reproject it (gdalwarp -t_srs) to the DTM's CRS");
+    const RasterGrid& grid = dtm.grid;
+    std::vector<char> inside(static_cast<std::size_t>(grid.columns) * grid.rows, 0);
+    for (int r = 0; r < grid.rows; ++r)
+        for (int c = 0; c < grid.columns; ++c) {
+            const Eigen::Vector2d p = grid.centre(c, r);
+            int rc = 0, rr = 0;
+            if (!release.grid.cellOf(p.x(), p.y(), rc, rr)) continue;
+            const double v = release.values[release.grid.index(rc, rr)];
+            inside[grid.index(c, r)] = std::isfinite(v) && v != 0;
+        }
+    return inside;
+}
+
+}  // namespace
+
+std::vector<ReleaseCell> readReleaseCells(const std::string& path, const Dtm& dtm) {
+    initGdal();
+    CPLErrorReset();
+    GDALDatasetUniquePtr vector(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
+    std::vector<char> inside;
+    if (vector && vector->GetLayerCount() > 0) {
+        inside = cellsInPolygons(*vector, path, dtm);
+    } else {
+        CPLErrorReset();
+        GDALDatasetUniquePtr raster(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+        if (!raster) throw InputError(path, 0, unreadable("polygons or a raster"));
+        raster.reset();
+        inside = cellsOnRaster(path, dtm);
+    }
+    const RasterGrid& grid = dtm.grid;
     std::vector<ReleaseCell> cells;
     for (int r = 0; r < grid.rows; ++r)
         for (int c = 0; c < grid.columns; ++c)
             if (inside[grid.index(c, r)]) cells.push_back({c, r});
     if (cells.empty())
-        throw InputError(path, 0, "its polygons cover no cell centre of the DTM (" + dtm.path +
-                                      "): are they outside it, or smaller than a cell of " + readableNumber(grid.cellSize()) + " m?");
+        throw InputError(path, 0, "it covers no cell centre of the DTM (" + dtm.path + "): is it outside it, smaller than a cell of " +
+                                      readableNumber(grid.cellSize()) + " m, or a raster of zeros?");
     for (const auto& cell : cells) {
         const Eigen::Vector2d p = grid.centre(cell.column, cell.row);
         try {

@@ -139,9 +139,26 @@ TEST_F(Hazard, ReleaseCellsAreTheCellsWhoseCentreIsInside) {
     EXPECT_EQ(cells[3].row, 2);
 }
 
+// A release raster (Rockyfor3D's rockdensity.asc, say) on a coarser grid than the DTM: a DTM cell
+// releases when its centre falls on a raster cell holding neither 0 nor NODATA.
+TEST_F(Hazard, ReleaseRasterMarksTheCellsWhoseCentreFallsOnAValue) {
+    const Dtm d = readDtm(dtm("d.asc", 6, 4, 5.0, 0, 0, [](int c, int) { return 100.0 - 3 * c; }));
+    // 3 x 2 cells of 10 m, row 0 north: values 0 1 0 / -9999 0 2. The DTM's 5 m cell (c, r) lies in the
+    // raster's cell (c / 2, r / 2): columns 2-3 of rows 0-1 (value 1) and columns 4-5 of rows 2-3 (value 2).
+    const std::string raster = write("release.asc", "ncols 3\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize 10\nNODATA_value -9999\n"
+                                                    "0 1 0\n-9999 0 2\n");
+    const auto cells = readReleaseCells(raster, d);
+    ASSERT_EQ(cells.size(), 8u);
+    for (const auto& c : cells) EXPECT_TRUE((c.row <= 1 && (c.column == 2 || c.column == 3)) || (c.row >= 2 && c.column >= 4)) << c.column << "," << c.row;
+    const std::string zeros = write("zeros.asc", "ncols 3\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize 10\n0 0 0\n0 0 0\n");
+    EXPECT_NE(errorOf([&] { readReleaseCells(zeros, d); }).find("a raster of zeros"), std::string::npos);
+    EXPECT_NE(errorOf([&] { readReleaseCells(write("junk.txt", "not a raster\n"), d); }).find("cannot read it as polygons or a raster"),
+              std::string::npos);
+}
+
 TEST_F(Hazard, ReleaseErrorsSayWhatIsWrong) {
     const Dtm d = readDtm(dtm("d.asc", 6, 4, 5.0, 700000, 6600000, [](int c, int) { return 100.0 - 3 * c; }, true));
-    EXPECT_NE(errorOf([&] { readReleaseCells(polygon("far.geojson", 800000, 6700000, 800010, 6700010), d); }).find("cover no cell centre"), std::string::npos);
+    EXPECT_NE(errorOf([&] { readReleaseCells(polygon("far.geojson", 800000, 6700000, 800010, 6700010), d); }).find("covers no cell centre"), std::string::npos);
     EXPECT_NE(errorOf([&] { readReleaseCells(polygon("tiny.geojson", 700001, 6600001, 700002, 6600002), d); }).find("smaller than a cell"),
               std::string::npos);
     const std::string wgs = polygon("wgs.geojson", 3, 46, 3.1, 46.1);  // degrees: GeoJSON's own CRS, not the DTM's

@@ -32,8 +32,16 @@ struct Dtm {
     std::string path;
 };
 
-// Band 1 of the raster. InputError naming the file: cannot be opened, rotated or non-square cells,
-// fewer than 2 x 2 cells.
+// Band 1 of any raster, north up with square cells.
+struct GeoRaster {
+    RasterGrid grid;
+    std::vector<double> values;  // row-major, row 0 the northernmost; NaN where the band has no value (NODATA, mask)
+};
+// InputError naming the file: cannot be opened, no georeferencing, rotated or non-square cells.
+GeoRaster readRaster(const std::string& path);
+
+// Band 1 of the raster as a terrain. InputError naming the file: readRaster's, fewer than 2 x 2 cells,
+// a CRS in degrees or not in metres, cells outside 0.01-1000 m.
 Dtm readDtm(const std::string& path);
 
 // A single-band Float32 GeoTIFF on `grid` (values row-major, row 0 the northernmost), `noData`

@@ -1,6 +1,8 @@
 #pragma once
 // Where blocks start on a DTM: the polygons of a vector layer (GeoJSON, GeoPackage, Shapefile, any
-// format GDAL/OGR reads), turned into the DTM's cells whose centre lies inside one of them.
+// format GDAL/OGR reads), turned into the DTM's cells whose centre lies inside one of them; or a
+// raster (any grid in the DTM's CRS) whose cells other than 0 and NODATA release the DTM cells whose
+// centre falls on them.
 #include <string>
 #include <vector>
 
@@ -12,9 +14,10 @@ struct ReleaseCell {
     int column = 0, row = 0;  // on the DTM's grid, row 0 the northernmost
 };
 
-// The release cells, in row-major order. InputError naming the file for: a file OGR cannot open,
-// no polygon in any layer, a CRS other than the DTM's, polygons that cover no DTM cell centre
-// (outside the DTM, or smaller than a cell), and a release cell whose height is NODATA.
+// The release cells, in row-major order. InputError naming the file for: a file GDAL opens neither as
+// vector data nor as a raster, no polygon in any layer, a CRS other than the DTM's, a release that
+// covers no DTM cell centre (outside the DTM, smaller than a cell, a raster of zeros), and a release
+// cell whose height is NODATA.
 std::vector<ReleaseCell> readReleaseCells(const std::string& path, const Dtm& dtm);
 
 }  // namespace sylva::assess

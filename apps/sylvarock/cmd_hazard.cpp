@@ -75,7 +75,7 @@ int runHazardCommand(int argc, const char* const* argv) {
         failed += p.failed;
     }
     if (!r.figureWarning.empty()) std::cerr << "sylvarock hazard: warning: " << r.figureWarning << "\n";
-    std::printf("rasters, map.svg and summary.json in %s (%.1f s)\n", h.outDir.c_str(), wall);
+    std::printf("rasters, map.svg, map.png and summary.json in %s (%.1f s)\n", h.outDir.c_str(), wall);
     if (failed) {
         std::cerr << "sylvarock hazard: " << failed << " run(s) stopped on a numerical error and are left out (summary.json failed_runs)\n";
         return kRunsFailed;

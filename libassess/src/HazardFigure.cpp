@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -57,17 +58,21 @@ FigureSet drawHazardMap(const std::string& outDir, const Dtm& dtm, const std::ve
     }
     const double width = g.columns * g.cellSize(), height = g.rows * g.cellSize();
     const int px = 1000, py = std::max(250, static_cast<int>(px * height / width) + 120);
+    char topText[32];
+    std::snprintf(topText, sizeof topText, "%.2g", top);
     std::ostringstream gp;
     gp.precision(10);  // projected coordinates to the metre
     gp << "# The hazard map of sylvarock hazard; run `gnuplot figures.gp` in this folder to redraw it.\n"
        << "set terminal svg size " << px << ',' << py << " dynamic noenhanced font 'sans,11'\nset output '../map.svg'\n"
-       << "set title 'Reach probability (light yellow to dark red: 0 to " << top << ") over the hillshade; trees in green'\n"
+       << "set title 'Reach probability (light yellow to dark red: 0 to " << topText << ") over the hillshade; trees in green'\n"
        << "set xlabel 'm east of " << west << "'\nset ylabel 'm north of " << south << "'\nset size ratio -1\n"
        << "set xrange [0:" << width << "]\nset yrange [0:" << height << "]\nunset key\n"
        << "plot 'hillshade.dat' using 1:2:3:4:5 with rgbimage, 'reach.dat' using 1:2:3:4:5:6 with rgbalpha, "
-       << "'trees.dat' using 1:2 with dots lc rgb '#1e8449'\n";
-    FigureSet set = runGnuplot(dir, gp.str(), {"../map.svg"});
-    for (auto& f : set.files) f = "map.svg";
+       << "'trees.dat' using 1:2 with dots lc rgb '#1e8449'\n"
+       // The same map as a picture for a report or a mail, where an SVG is not welcome.
+       << "set terminal pngcairo size " << px << ',' << py << " noenhanced font 'sans,10'\nset output '../map.png'\nreplot\nunset output\n";
+    FigureSet set = runGnuplot(dir, gp.str(), {"../map.svg", "../map.png"});
+    for (auto& f : set.files) f = f.substr(3);
     return set;
 }
 

@@ -261,6 +261,13 @@ TEST_F(Hazard, SmallSlopeEndToEnd) {
     o.outDir = (dir_ / "two").string();
     runHazard(o);
     EXPECT_EQ(one.releaseCells, 8);
+    // The map for people, as SVG and PNG (gnuplot-nox is installed by scripts/install-deps.sh).
+    EXPECT_EQ(one.figureWarning, "");
+    std::ifstream png(dir_ / "one/map.png", std::ios::binary);
+    std::string magic(4, '\0');
+    png.read(magic.data(), 4);
+    EXPECT_EQ(magic, "\x89PNG");
+    EXPECT_GT(fs::file_size(dir_ / "one/map.svg"), 1000u);
     ASSERT_EQ(one.passes.size(), 2u);
     EXPECT_EQ(one.passes[0].blocks, 200);
     EXPECT_GT(one.passes[0].treeImpacts, 0);

@@ -1,5 +1,5 @@
 #pragma once
-// The hazard map for people (OUT/map.svg): the DTM's hillshade, the reach probability over it and
+// The hazard map for people (OUT/map.svg, and OUT/map.png for reports): the DTM's hillshade, the reach probability over it and
 // the trees, drawn by gnuplot from data written beside it (OUT/map/), which a user can restyle.
 #include <string>
 #include <vector>

@@ -27,6 +27,8 @@ int runHazardCommand(int argc, const char* const* argv) {
                    "../stands/MO1, looked up beside the file, then from here) and `structure` (A or NA); a virtual forest of each stand is drawn "
                    "inside its polygon (seeded by --seed) and written to OUT/forest.csv")
         ("compare-bare", po::bool_switch(), "also run without the trees: rasters in OUT/bare/ and the forest's protection map OUT/protection.tif")
+        ("block-volumes", po::value<std::string>(), "a block-volume distribution: V1,V2,... m3 equally likely, or V1:W1,V2:W2,... with weights "
+                          "(relative frequencies); each block draws its class; shape from the scene (a cuboid scaled alike); default: the scene's block")
         ("model", po::value<std::string>()->default_value("dem"), "dem (the discrete element model) | lumped (the lumped-mass model, thousands of blocks per second; docs/lumped.md)")
         ("scene", po::value<std::string>(), "scene INI for the block, contact laws and stems (its terrain, if any, is replaced by --dtm); default: the built-in values")
         ("set", po::value(&sets)->composing(), "override a scene key: --set section.key=value (repeatable; sylvarock simulate --help-scene lists them)")
@@ -52,6 +54,7 @@ int runHazardCommand(int argc, const char* const* argv) {
     h.sceneOverrides = sets;
     h.model = dem::parseModel(vm["model"].as<std::string>());
     h.runsPerCell = vm["runs-per-cell"].as<int>();
+    if (vm.count("block-volumes")) h.blockVolumes = assess::parseBlockVolumes(vm["block-volumes"].as<std::string>());
     h.seed = vm["seed"].as<Seed>().value;
     h.threads = threadCount(vm);
     h.compareBare = vm["compare-bare"].as<bool>();
@@ -72,6 +75,8 @@ int runHazardCommand(int argc, const char* const* argv) {
         std::printf("%-6s %ld blocks: %ld at rest, %ld left the DTM, %ld at the time limit; path length p50 %.1f m, p90 %.1f m; "
                     "reach p50 %.1f m, max %.1f m; %ld tree impacts\n",
                     p.name.c_str(), p.blocks, p.rest, p.leftDomain, p.timeLimit, p.pathP50, p.pathP90, p.reachP50, p.reachMax, p.treeImpacts);
+        for (std::size_t k = 0; k < p.blocksPerVolume.size(); ++k)
+            std::printf("       %ld blocks of %g m3\n", p.blocksPerVolume[k], h.blockVolumes[k].volumeM3);
         failed += p.failed;
     }
     if (!r.figureWarning.empty()) std::cerr << "sylvarock hazard: warning: " << r.figureWarning << "\n";

@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
+#include <sstream>
 #include <unordered_map>
 
 #include "libassess/GeoRaster.hpp"
@@ -44,13 +46,44 @@ void prepareOutDir(const std::string& dir) {
     fs::create_directories(dir);
 }
 
-HazardPass runPass(const std::string& name, const dem::Scene& scene, const Dtm& dtm, const std::vector<ReleaseCell>& cells,
+// The scene of each block-volume class (the scene itself without classes) and where each class ends
+// on [0, 1].
+struct BlockClasses {
+    std::vector<dem::Scene> resized;       // a scene per class, sharing the soil bed
+    std::vector<const dem::Scene*> scenes;
+    std::vector<double> upTo;
+    BlockClasses(const dem::Scene& scene, const std::vector<BlockVolumeClass>& classes) {
+        if (classes.empty()) {
+            scenes.push_back(&scene);
+            return;
+        }
+        double total = 0;
+        for (const auto& c : classes) total += c.weight;
+        double sum = 0;
+        for (const auto& c : classes) {
+            resized.push_back(scene.withBlockVolume(c.volumeM3));
+            upTo.push_back((sum += c.weight) / total);
+        }
+        upTo.back() = 1;
+        for (const auto& r : resized) scenes.push_back(&r);
+    }
+    // The class of a uniform draw u in [0, 1).
+    std::size_t of(double u) const {
+        std::size_t k = 0;
+        while (k + 1 < upTo.size() && u >= upTo[k]) ++k;
+        return k;
+    }
+};
+
+HazardPass runPass(const std::string& name, const BlockClasses& blocks, const Dtm& dtm, const std::vector<ReleaseCell>& cells,
                    const HazardOptions& o, HazardMap& map) {
+    const dem::Scene& scene = *blocks.scenes.front();
     std::unordered_map<long, Eigen::Vector2d> treeAt;
     for (const auto& t : scene.forest().trees) treeAt[t.id] = {t.x, t.y};
     const long total = static_cast<long>(cells.size()) * o.runsPerCell;
     std::vector<BlockTrace> traces(static_cast<std::size_t>(total));
     std::vector<char> failed(traces.size(), 0);
+    std::vector<std::size_t> volumeClass(traces.size(), 0);
     std::atomic<long> next{0};
     std::mutex progress;
     int done = 0, notes = 0;
@@ -72,12 +105,15 @@ HazardPass runPass(const std::string& name, const dem::Scene& scene, const Dtm& 
             // moved onto that edge.
             run.releaseAt = Eigen::Vector2d(std::clamp(centre.x() + rng.uniform(-0.5, 0.5) * cell, soil.xmin(), soil.xmax()),
                                             std::clamp(centre.y() + rng.uniform(-0.5, 0.5) * cell, soil.ymin(), soil.ymax()));
+            // Drawn only with several classes: without them the runs are those of a single-volume map.
+            if (blocks.scenes.size() > 1) volumeClass[i] = blocks.of(rng.uniform(0, 1));
+            const dem::Scene& classScene = *blocks.scenes[volumeClass[i]];
             const std::string which = name + " run " + std::to_string(i) + " (seed " + std::to_string(seed) + ", release cell column " +
                                       std::to_string(cells[i / o.runsPerCell].column + 1) + ", row " +
                                       std::to_string(cells[i / o.runsPerCell].row + 1) + ")";
             try {
-                const dem::RunResult r = o.model == dem::Model::Dem ? dem::simulateBlock(scene, static_cast<int>(i), seed, run)
-                                                                     : dem::simulateLumped(scene, static_cast<int>(i), seed, run);
+                const dem::RunResult r = o.model == dem::Model::Dem ? dem::simulateBlock(classScene, static_cast<int>(i), seed, run)
+                                                                     : dem::simulateLumped(classScene, static_cast<int>(i), seed, run);
                 traces[i] = traceRun(r, dtm, treeAt);
             } catch (const dem::SimulationError& e) {
                 failed[i] = 1;
@@ -97,6 +133,7 @@ HazardPass runPass(const std::string& name, const dem::Scene& scene, const Dtm& 
     });
     HazardPass pass;
     pass.name = name;
+    if (blocks.scenes.size() > 1) pass.blocksPerVolume.assign(blocks.scenes.size(), 0);
     std::vector<double> path, reach;
     for (std::size_t i = 0; i < traces.size(); ++i) {
         if (failed[i]) {
@@ -106,6 +143,7 @@ HazardPass runPass(const std::string& name, const dem::Scene& scene, const Dtm& 
         const BlockTrace& t = traces[i];
         map.add(t);
         ++pass.blocks;
+        if (!pass.blocksPerVolume.empty()) ++pass.blocksPerVolume[volumeClass[i]];
         pass.rest += t.reason == dem::StopReason::Rest;
         pass.leftDomain += t.reason == dem::StopReason::LeftDomain;
         pass.timeLimit += t.reason == dem::StopReason::TimeLimit;
@@ -151,6 +189,34 @@ nlohmann::ordered_json passJson(const HazardPass& p) {
 
 }  // namespace
 
+std::vector<BlockVolumeClass> parseBlockVolumes(const std::string& text) {
+    std::vector<BlockVolumeClass> classes;
+    std::stringstream list(text);
+    for (std::string item; std::getline(list, item, ',');) {
+        BlockVolumeClass c;
+        const auto colon = item.find(':');
+        const auto number = [&](const std::string& s, const char* what) {
+            std::size_t used = 0;
+            double v = std::nan("");
+            try {
+                v = std::stod(s, &used);
+            } catch (const std::exception&) {
+            }
+            if (used != s.size() || !std::isfinite(v))
+                throw InputError("--block-volumes '" + text + "': " + what + " '" + s + "' is not a number (expected V1,V2,... or V1:W1,V2:W2,...)");
+            return v;
+        };
+        c.volumeM3 = number(item.substr(0, colon), "volume");
+        if (colon != std::string::npos) c.weight = number(item.substr(colon + 1), "weight");
+        if (!(c.volumeM3 > 0 && c.volumeM3 <= 1000))
+            throw InputError("--block-volumes '" + text + "': a volume of " + readableNumber(c.volumeM3) + " m3 is not in (0, 1000]");
+        if (!(c.weight > 0)) throw InputError("--block-volumes '" + text + "': a weight of " + readableNumber(c.weight) + " is not positive");
+        classes.push_back(c);
+    }
+    if (classes.empty()) throw InputError("--block-volumes: empty list (expected V1,V2,... or V1:W1,V2:W2,...)");
+    return classes;
+}
+
 HazardResults runHazard(const HazardOptions& o) {
     if (o.runsPerCell < 1) throw InputError("--runs-per-cell must be at least 1, got " + std::to_string(o.runsPerCell));
     const Dtm dtm = readDtm(o.dtmPath);
@@ -195,14 +261,14 @@ HazardResults runHazard(const HazardOptions& o) {
     const bool forested = !forest.trees.empty();
     const dem::Scene scene(config, dtm.elevation, std::move(forest));
     HazardMap map(dtm.grid);
-    results.passes.push_back(runPass(forested ? "forest" : "bare", scene, dtm, cells, o, map));
+    results.passes.push_back(runPass(forested ? "forest" : "bare", BlockClasses(scene, o.blockVolumes), dtm, cells, o, map));
     results.rasters = writeRasters(o.outDir, map, dtm, forested);
     const FigureSet figure = drawHazardMap(o.outDir, dtm, map.reachProbability(), scene.forest());
     results.figureWarning = figure.warning;
     if (o.compareBare) {
         const dem::Scene bare(config, dtm.elevation);
         HazardMap bareMap(dtm.grid);
-        results.passes.push_back(runPass("bare", bare, dtm, cells, o, bareMap));
+        results.passes.push_back(runPass("bare", BlockClasses(bare, o.blockVolumes), dtm, cells, o, bareMap));
         for (const auto& name : writeRasters(o.outDir + "/bare", bareMap, dtm, false)) results.rasters.push_back("bare/" + name);
         // What the forest takes off the reach probability: bare minus forest, in [-1, 1].
         std::vector<float> protection = bareMap.reachProbability();
@@ -220,6 +286,14 @@ HazardResults runHazard(const HazardOptions& o) {
     j["runs_per_cell"] = o.runsPerCell;
     j["model"] = dem::toString(o.model);
     j["seed"] = o.seed;
+    if (!o.blockVolumes.empty()) {
+        j["block_volumes"] = nlohmann::ordered_json::array();
+        for (std::size_t k = 0; k < o.blockVolumes.size(); ++k) {
+            nlohmann::ordered_json c{{"volume_m3", o.blockVolumes[k].volumeM3}, {"weight", o.blockVolumes[k].weight}};
+            for (const auto& p : results.passes) c["blocks"][p.name] = p.blocksPerVolume.at(k);
+            j["block_volumes"].push_back(c);
+        }
+    }
     j["trees"] = results.trees;
     if (!o.standsPath.empty()) {
         j["stands_file"] = o.standsPath;

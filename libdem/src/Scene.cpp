@@ -1,5 +1,7 @@
 #include "libdem/Scene.hpp"
 
+#include <cmath>
+
 #include "libstand/Allometry.hpp"
 #include "libcommon/InputError.hpp"
 
@@ -55,9 +57,14 @@ Scene::Scene(SceneConfig config, std::shared_ptr<const SoilBed> soil, stand::For
         config_.release.yMin = config_.release.forestYMin;
         config_.release.yMax = config_.release.forestYMax;
     }
+    if (!forest_.trees.empty()) trees_ = TreeField(forest_, *soil_);
+    setContactLaws();
+}
+
+// The soil's law takes the block's mass (its dashpot, Eq. 16): set again when the block changes.
+void Scene::setContactLaws() {
     laws_.set(BodyKind::Block, BodyKind::Soil, std::make_shared<SoilContact>(config_.soilContact, block_.mass()));
     if (!forest_.trees.empty()) {
-        trees_ = TreeField(forest_, *soil_);
         laws_.set(BodyKind::Block, BodyKind::Stem, std::make_shared<BlockStemContact>(config_.stemContact));
         laws_.set(BodyKind::Stem, BodyKind::Stem, std::make_shared<StemStemContact>(config_.stemContact));
         // Stems and broken pieces on the ground: the soil's law as under the block, its dashpot a
@@ -70,6 +77,22 @@ Scene::Scene(SceneConfig config, std::shared_ptr<const SoilBed> soil, stand::For
 Scene Scene::withLumped(const LumpedParams& params) const {
     Scene s(*this);
     s.config_.lumped = params;
+    return s;
+}
+
+Scene Scene::withBlockVolume(double volumeM3) const {
+    if (!(volumeM3 > 0)) throw InputError("a block volume of " + readableNumber(volumeM3) + " m3: it must be positive");
+    Scene s(*this);
+    BlockSpec& b = s.config_.block;
+    if (b.shape == BlockShapeKind::Cuboid) {
+        const double scale = std::cbrt(volumeM3 / (b.d1 * b.d2 * b.d3));
+        b.d1 *= scale;
+        b.d2 *= scale;
+        b.d3 *= scale;
+    }
+    b.volumeM3 = volumeM3;
+    s.block_ = makeBlock(b);
+    s.setContactLaws();
     return s;
 }
 

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "DemTestScenes.hpp"
+#include "libcommon/InputError.hpp"
 #include "libdem/Campaign.hpp"
 #include "libdem/CampaignSummary.hpp"
 
@@ -32,6 +33,23 @@ TEST(Campaign, ResultsDoNotDependOnTheNumberOfThreads) {
         EXPECT_EQ(one[i].steps, three[i].steps);
     }
     EXPECT_NE(one[0].stop, one[1].stop);  // runs do differ (random orientation)
+}
+
+// A hazard map's block-volume classes: the scene's block at another volume, its shape kept (a cube's
+// or a cuboid's lengths scale with the cube root of the volume ratio), the scene itself untouched.
+TEST(Campaign, SceneWithAnotherBlockVolumeScalesItsBlock) {
+    const Scene cube(sylva::dem::testing::straightSlopeScene(30, 120, 40, {}));
+    const Scene big = cube.withBlockVolume(4.0);
+    EXPECT_DOUBLE_EQ(cube.blockTemplate().mass(), 2700 * 0.5);
+    EXPECT_DOUBLE_EQ(big.blockTemplate().mass(), 2700 * 4.0);
+    EXPECT_NEAR(big.blockTemplate().boundingRadius() / cube.blockTemplate().boundingRadius(), 2.0, 1e-12);  // (4 / 0.5)^(1/3)
+    EXPECT_EQ(&big.soil(), &cube.soil());  // the bed is shared, not rebuilt
+    const Scene cuboid(sylva::dem::testing::straightSlopeScene(30, 120, 40, {"block.shape=cuboid", "block.d1_m=1.2", "block.d2_m=0.8", "block.d3_m=0.4"}));
+    const Scene twice = cuboid.withBlockVolume(2 * 1.2 * 0.8 * 0.4);
+    EXPECT_NEAR(twice.config().block.d1 / 1.2, std::cbrt(2.0), 1e-12);
+    EXPECT_NEAR(twice.config().block.d3 / twice.config().block.d2, 0.5, 1e-12);
+    EXPECT_NEAR(twice.blockTemplate().mass(), 2 * cuboid.blockTemplate().mass(), 1e-9);
+    EXPECT_THROW(cube.withBlockVolume(0), sylva::InputError);
 }
 
 TEST(Campaign, QuantilesFollowGslsDefinition) {

@@ -11,6 +11,16 @@
 
 namespace sylva::assess {
 
+// One class of a block-volume distribution: blocks of this volume (the scene's shape scaled) are
+// released with probability weight / (sum of the weights).
+struct BlockVolumeClass {
+    double volumeM3 = 0;
+    double weight = 1;
+};
+// "0.5,1,2" (equally likely) or "0.5:6,1:3,2:1" (volume:weight). InputError on a volume outside
+// (0, 1000] m3, a weight <= 0, or text that is not such a list.
+std::vector<BlockVolumeClass> parseBlockVolumes(const std::string& text);
+
 struct HazardOptions {
     std::string dtmPath;       // any raster GDAL reads
     std::string releasePath;   // polygons (GeoJSON, GeoPackage, Shapefile, ...)
@@ -20,6 +30,7 @@ struct HazardOptions {
     std::vector<std::string> sceneOverrides;
     dem::Model model = dem::Model::Dem;
     int runsPerCell = 10;
+    std::vector<BlockVolumeClass> blockVolumes;  // empty: every block is the scene's
     std::uint64_t seed = 1;
     int threads = 0;
     bool compareBare = false;  // also without the forest, and the forest's protection map
@@ -33,6 +44,7 @@ struct HazardPass {
     long blocks = 0, failed = 0, rest = 0, leftDomain = 0, timeLimit = 0;
     double pathP50 = 0, pathP90 = 0, reachP50 = 0, reachP90 = 0, reachMax = 0;  // m
     long treeImpacts = 0;
+    std::vector<long> blocksPerVolume;  // with HazardOptions::blockVolumes: blocks (not failed) of each class
 };
 
 struct HazardResults {

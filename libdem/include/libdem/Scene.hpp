@@ -29,9 +29,13 @@ public:
     const TreeField& trees() const { return trees_; }
     // The same scene with other lumped-model parameters (the soil bed is shared, not rebuilt).
     Scene withLumped(const LumpedParams& params) const;
+    // The same scene with a block of another volume and the same shape (a cuboid's edges scaled
+    // alike), its contact laws set for the new mass; the soil bed is shared. InputError if volumeM3 <= 0.
+    Scene withBlockVolume(double volumeM3) const;
 
 private:
     Scene(SceneConfig config, std::shared_ptr<const SoilBed> soil, stand::Forest forest);
+    void setContactLaws();
     SceneConfig config_;
     std::shared_ptr<const SoilBed> soil_;
     RigidBody block_;

@@ -29,6 +29,12 @@ int runHazardCommand(int argc, const char* const* argv) {
         ("compare-bare", po::bool_switch(), "also run without the trees: rasters in OUT/bare/ and the forest's protection map OUT/protection.tif")
         ("block-volumes", po::value<std::string>(), "a block-volume distribution: V1,V2,... m3 equally likely, or V1:W1,V2:W2,... with weights "
                           "(relative frequencies); each block draws its class; shape from the scene (a cuboid scaled alike); default: the scene's block")
+        ("check-lines", po::value<std::string>(), "lines (a line layer in the DTM's CRS, named by a field `name`) where a barrier or a road would go: "
+                        "the energy, passing height and speed of each block's first crossing in OUT/check_lines.csv, their distribution per line "
+                        "(p50/p95/p99) in OUT/check_lines_summary.csv")
+        ("trajectories", po::bool_switch(), "OUT/trajectories.gpkg: each block's path (layer paths_<pass>, a 3-D line) and the trees it hit "
+                         "(impacts_<pass>), for a GIS; at most 100 000 runs a pass")
+        ("vtk", po::bool_switch(), "OUT/vtk/: the terrain, the stems and the blocks' paths as legacy VTK files for ParaView")
         ("model", po::value<std::string>()->default_value("dem"), "dem (the discrete element model) | lumped (the lumped-mass model, thousands of blocks per second; docs/lumped.md)")
         ("scene", po::value<std::string>(), "scene INI for the block, contact laws and stems (its terrain, if any, is replaced by --dtm); default: the built-in values")
         ("set", po::value(&sets)->composing(), "override a scene key: --set section.key=value (repeatable; sylvarock simulate --help-scene lists them)")
@@ -37,10 +43,11 @@ int runHazardCommand(int argc, const char* const* argv) {
         ("out", po::value<std::string>(), "output folder (new or empty): reach_probability.tif, passing_count.tif, deposits.tif, energy_p95_kj.tif, height_p95_m.tif, tree_impacts.tif, summary.json");
     po::variables_map vm;
     if (!parse(argc, argv, o, vm,
-               "sylvarock hazard --dtm DTM --release RELEASE.geojson --runs-per-cell N --out DIR [--trees POINTS | --stands POLYGONS] [--compare-bare] "
-               "[--model dem|lumped] [--seed S] [--threads T]",
-               "  sylvarock hazard --dtm data/hazard/slope.tif --release data/hazard/release.geojson --trees data/hazard/trees.csv \\\n"
-               "      --runs-per-cell 5 --compare-bare --seed 1 --out out/hazard\n"
+               "sylvarock hazard --dtm DTM --release RELEASE.geojson|RELEASE.tif --runs-per-cell N --out DIR [--trees POINTS | --stands POLYGONS] "
+               "[--compare-bare] [--check-lines LINES] [--trajectories] [--vtk] [--block-volumes V1:W1,...] [--model dem|lumped] [--seed S] [--threads T]",
+               "  sylvarock hazard --dtm data/hazard/slope.tif --release data/hazard/release.geojson --stands data/hazard/stands.geojson \\\n"
+               "      --check-lines data/hazard/check-lines.geojson --runs-per-cell 5 --compare-bare --seed 1 --out out/hazard\n"
+               "  sylvarock hazard ... --trees data/hazard/trees.csv --model lumped --runs-per-cell 100 --block-volumes 0.2:6,1:3,5:1 --trajectories --out out/hz2\n"
                "  gdalinfo -stats out/hazard/reach_probability.tif     (the rasters open in QGIS over the DTM)\n"))
         return 0;
     for (const char* required : {"dtm", "release", "out"})
@@ -58,6 +65,9 @@ int runHazardCommand(int argc, const char* const* argv) {
     h.seed = vm["seed"].as<Seed>().value;
     h.threads = threadCount(vm);
     h.compareBare = vm["compare-bare"].as<bool>();
+    if (vm.count("check-lines")) h.checkLinesPath = vm["check-lines"].as<std::string>();
+    h.writeTrajectories = vm["trajectories"].as<bool>();
+    h.writeVtk = vm["vtk"].as<bool>();
     h.outDir = vm["out"].as<std::string>();
     h.onNote = [](const std::string& text) { std::cerr << "sylvarock hazard: " << text << "\n"; };
     ProgressBar progress(stderrIsTerminal());
@@ -80,7 +90,9 @@ int runHazardCommand(int argc, const char* const* argv) {
         failed += p.failed;
     }
     if (!r.figureWarning.empty()) std::cerr << "sylvarock hazard: warning: " << r.figureWarning << "\n";
-    std::printf("rasters, map.svg, map.png and summary.json in %s (%.1f s)\n", h.outDir.c_str(), wall);
+    std::string others;
+    for (const auto& f : r.files) others += ", " + f;
+    std::printf("rasters, map.svg, map.png%s and summary.json in %s (%.1f s)\n", others.c_str(), h.outDir.c_str(), wall);
     if (failed) {
         std::cerr << "sylvarock hazard: " << failed << " run(s) stopped on a numerical error and are left out (summary.json failed_runs)\n";
         return kRunsFailed;

@@ -2,7 +2,7 @@
 """Writes the hazard example of data/hazard/ (README, docs/hazard.md): a 5 m DTM made from the stand-in
 slope's mean shape (data/slopes/standin-smooth.csv) with a shallow gully down its middle, placed in
 RGF93 v1 / Lambert-93 (EPSG:2154) near Grenoble; a release polygon; two stand polygons (an aggregated MO1
-above a random GR1 with a clearing) for `hazard --stands`; the trees of an aggregated MO1 forest
+above a random GR1 with a clearing) for `hazard --stands`; two check lines, above the forest and in it; the trees of an aggregated MO1 forest
 (sylvarock generate) moved into the same CRS, for `hazard --trees`. It is a made-up slope in a real CRS, not a survey.
 
     python3 data/hazard/make_example.py build/apps/sylvarock      (needs gdal_translate, from gdal-bin)
@@ -57,6 +57,15 @@ json.dump({"type": "FeatureCollection", "name": "stands",
                         {"type": "Feature", "properties": {"stand": "../stands/GR1", "structure": "NA"},
                          "geometry": {"type": "Polygon", "coordinates": [moved(lower), moved(clearing)]}}]},
           open(os.path.join(HERE, "stands.geojson"), "w"), indent=1)
+
+# Where a barrier could go: across the slope above the forest, and in it.
+json.dump({"type": "FeatureCollection", "name": "check-lines",
+           "crs": {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::2154"}},
+           "features": [{"type": "Feature", "properties": {"name": "above the forest (125 m)"},
+                         "geometry": {"type": "LineString", "coordinates": moved([(125, 2.5), (125, 197.5)])}},
+                        {"type": "Feature", "properties": {"name": "in the forest (250 m)"},
+                         "geometry": {"type": "LineString", "coordinates": moved([(250, 2.5), (250, 197.5)])}}]},
+          open(os.path.join(HERE, "check-lines.geojson"), "w"), indent=1)
 
 local = os.path.join(HERE, "trees-local.csv")
 subprocess.run([exe, "generate", "--stems", os.path.join(ROOT, "data/stands/MO1_stems.csv"), "--plots",

@@ -8,9 +8,12 @@
 #include <filesystem>
 #include <fstream>
 #include <mutex>
+#include <optional>
 #include <sstream>
 #include <unordered_map>
 
+#include "libassess/BlockPaths.hpp"
+#include "libassess/CheckLines.hpp"
 #include "libassess/GeoRaster.hpp"
 #include "libassess/HazardFigure.hpp"
 #include "libassess/HazardMap.hpp"
@@ -37,6 +40,10 @@ constexpr double kMaxSampleInterval = 0.01;
 constexpr int kMostNotes = 10;
 // Every run's trace is kept until the pass ends (~1-5 kB each): a million runs is ~1-5 GB.
 constexpr long kMostRuns = 1000000;
+// Exported paths keep a point per metre the block moved (about its size) and at least every 0.5 s:
+// ~40 B a point, a few hundred points a block, so at most 10^5 runs a pass when they are kept.
+constexpr double kPathSpacingM = 1.0, kPathGapS = 0.5;
+constexpr long kMostRunsWithPaths = 100000;
 
 // Empty or new: a hazard run never mixes its rasters with someone else's files.
 void prepareOutDir(const std::string& dir) {
@@ -75,8 +82,15 @@ struct BlockClasses {
     }
 };
 
+// What a pass writes besides the rasters, when asked for.
+struct PassOutputs {
+    const std::vector<CheckLine>* lines = nullptr;  // with checkLines
+    CheckLineTally* checkLines = nullptr;
+    bool paths = false;  // keep each block's thinned path and its tree impacts
+};
+
 HazardPass runPass(const std::string& name, const BlockClasses& blocks, const Dtm& dtm, const std::vector<ReleaseCell>& cells,
-                   const HazardOptions& o, HazardMap& map) {
+                   const HazardOptions& o, HazardMap& map, const PassOutputs& outputs) {
     const dem::Scene& scene = *blocks.scenes.front();
     std::unordered_map<long, Eigen::Vector2d> treeAt;
     for (const auto& t : scene.forest().trees) treeAt[t.id] = {t.x, t.y};
@@ -84,6 +98,9 @@ HazardPass runPass(const std::string& name, const BlockClasses& blocks, const Dt
     std::vector<BlockTrace> traces(static_cast<std::size_t>(total));
     std::vector<char> failed(traces.size(), 0);
     std::vector<std::size_t> volumeClass(traces.size(), 0);
+    std::vector<std::vector<LineCrossing>> crossings(outputs.checkLines ? traces.size() : 0);
+    std::vector<BlockPath> paths(outputs.paths ? traces.size() : 0);
+    std::vector<std::vector<ImpactPoint>> impacts(paths.size());
     std::atomic<long> next{0};
     std::mutex progress;
     int done = 0, notes = 0;
@@ -115,6 +132,19 @@ HazardPass runPass(const std::string& name, const BlockClasses& blocks, const Dt
                 const dem::RunResult r = o.model == dem::Model::Dem ? dem::simulateBlock(classScene, static_cast<int>(i), seed, run)
                                                                      : dem::simulateLumped(classScene, static_cast<int>(i), seed, run);
                 traces[i] = traceRun(r, dtm, treeAt);
+                if (outputs.checkLines) crossings[i] = crossCheckLines(r.trajectory, dtm, *outputs.lines);
+                if (outputs.paths) {
+                    BlockPath& p = paths[i];
+                    p.run = i;
+                    p.seed = seed;
+                    p.releaseColumn = cells[i / o.runsPerCell].column;
+                    p.releaseRow = cells[i / o.runsPerCell].row;
+                    p.reason = r.reason;
+                    p.pathLengthM = r.runoutAlongSlope;
+                    p.reachM = r.runoutHorizontal;
+                    p.points = thinPath(r.trajectory, kPathSpacingM, kPathGapS);
+                    impacts[i] = impactPoints(i, r.impacts, classScene.forest(), dtm);
+                }
             } catch (const dem::SimulationError& e) {
                 failed[i] = 1;
                 std::lock_guard<std::mutex> lock(progress);
@@ -135,6 +165,8 @@ HazardPass runPass(const std::string& name, const BlockClasses& blocks, const Dt
     pass.name = name;
     if (blocks.scenes.size() > 1) pass.blocksPerVolume.assign(blocks.scenes.size(), 0);
     std::vector<double> path, reach;
+    std::vector<BlockPath> keptPaths;
+    std::vector<ImpactPoint> keptImpacts;
     for (std::size_t i = 0; i < traces.size(); ++i) {
         if (failed[i]) {
             ++pass.failed;
@@ -142,6 +174,11 @@ HazardPass runPass(const std::string& name, const BlockClasses& blocks, const Dt
         }
         const BlockTrace& t = traces[i];
         map.add(t);
+        if (outputs.checkLines) outputs.checkLines->add(name, static_cast<long>(i), crossings[i]);
+        if (outputs.paths) {
+            keptPaths.push_back(std::move(paths[i]));
+            keptImpacts.insert(keptImpacts.end(), impacts[i].begin(), impacts[i].end());
+        }
         ++pass.blocks;
         if (!pass.blocksPerVolume.empty()) ++pass.blocksPerVolume[volumeClass[i]];
         pass.rest += t.reason == dem::StopReason::Rest;
@@ -150,6 +187,11 @@ HazardPass runPass(const std::string& name, const BlockClasses& blocks, const Dt
         pass.treeImpacts += static_cast<long>(t.impactCells.size());
         path.push_back(t.pathLengthM);
         reach.push_back(t.reachM);
+    }
+    if (outputs.checkLines) outputs.checkLines->setBlocks(name, pass.blocks);
+    if (outputs.paths) {
+        if (o.writeTrajectories) writePathLayers(o.outDir + "/trajectories.gpkg", dtm, name, keptPaths, keptImpacts);
+        if (o.writeVtk) writeVtkPaths(o.outDir + "/vtk", name, keptPaths);
     }
     if (!path.empty()) {
         pass.pathP50 = dem::quantile(path, 0.5);
@@ -224,7 +266,12 @@ HazardResults runHazard(const HazardOptions& o) {
         throw InputError(o.dtmPath, 0, "the DTM has " + std::to_string(holes) + " NODATA cell(s); sylvarock hazard builds its soil over the " +
                                            "whole DTM: fill them (gdal_fillnodata.py) or crop the DTM to where it has heights (gdalwarp -te)");
     const std::vector<ReleaseCell> cells = readReleaseCells(o.releasePath, dtm);
+    std::vector<CheckLine> lines;
+    if (!o.checkLinesPath.empty()) lines = readCheckLines(o.checkLinesPath, dtm);
     const long total = static_cast<long>(cells.size()) * o.runsPerCell;
+    if ((o.writeTrajectories || o.writeVtk) && total > kMostRunsWithPaths)
+        throw InputError(std::to_string(total) + " runs a pass with " + (o.writeTrajectories ? "--trajectories" : "--vtk") + ": at most " +
+                         std::to_string(kMostRunsWithPaths) + " keep their paths in memory: fewer runs per cell, or a smaller release area");
     if (total > kMostRuns)
         throw InputError("--runs-per-cell " + std::to_string(o.runsPerCell) + " on " + std::to_string(cells.size()) + " release cells is " +
                          std::to_string(total) + " runs, more than the " + std::to_string(kMostRuns) +
@@ -260,15 +307,22 @@ HazardResults runHazard(const HazardOptions& o) {
     results.trees = static_cast<long>(forest.trees.size());
     const bool forested = !forest.trees.empty();
     const dem::Scene scene(config, dtm.elevation, std::move(forest));
+    std::optional<CheckLineTally> tally;
+    if (!lines.empty()) tally.emplace(lines);
+    PassOutputs outputs;
+    outputs.lines = &lines;
+    outputs.checkLines = tally ? &*tally : nullptr;
+    outputs.paths = o.writeTrajectories || o.writeVtk;
+    if (o.writeVtk) writeVtkScene(o.outDir + "/vtk", dtm, scene.forest());
     HazardMap map(dtm.grid);
-    results.passes.push_back(runPass(forested ? "forest" : "bare", BlockClasses(scene, o.blockVolumes), dtm, cells, o, map));
+    results.passes.push_back(runPass(forested ? "forest" : "bare", BlockClasses(scene, o.blockVolumes), dtm, cells, o, map, outputs));
     results.rasters = writeRasters(o.outDir, map, dtm, forested);
     const FigureSet figure = drawHazardMap(o.outDir, dtm, map.reachProbability(), scene.forest());
     results.figureWarning = figure.warning;
     if (o.compareBare) {
         const dem::Scene bare(config, dtm.elevation);
         HazardMap bareMap(dtm.grid);
-        results.passes.push_back(runPass("bare", BlockClasses(bare, o.blockVolumes), dtm, cells, o, bareMap));
+        results.passes.push_back(runPass("bare", BlockClasses(bare, o.blockVolumes), dtm, cells, o, bareMap, outputs));
         for (const auto& name : writeRasters(o.outDir + "/bare", bareMap, dtm, false)) results.rasters.push_back("bare/" + name);
         // What the forest takes off the reach probability: bare minus forest, in [-1, 1].
         std::vector<float> protection = bareMap.reachProbability();
@@ -277,6 +331,14 @@ HazardResults runHazard(const HazardOptions& o) {
         writeGeoTiff(o.outDir + "/protection.tif", dtm.grid, protection, kNoData, "protection");
         results.rasters.push_back("protection.tif");
     }
+
+    if (tally) {
+        tally->write(o.outDir);
+        results.files.push_back("check_lines.csv");
+        results.files.push_back("check_lines_summary.csv");
+    }
+    if (o.writeTrajectories) results.files.push_back("trajectories.gpkg");
+    if (o.writeVtk) results.files.push_back("vtk/");
 
     nlohmann::ordered_json j;
     j["dtm"] = o.dtmPath;
@@ -309,6 +371,12 @@ HazardResults runHazard(const HazardOptions& o) {
     }
     for (const auto& p : results.passes) j["passes"][p.name] = passJson(p);
     j["rasters"] = results.rasters;
+    if (!lines.empty()) {
+        j["check_lines_file"] = o.checkLinesPath;
+        j["check_lines"] = nlohmann::ordered_json::array();
+        for (const auto& l : lines) j["check_lines"].push_back(l.name);
+    }
+    j["other_files"] = results.files;
     std::ofstream out(o.outDir + "/summary.json");
     out << j.dump(2) << "\n";
     if (!out) throw InputError(o.outDir + "/summary.json", 0, "cannot write");

@@ -2,9 +2,13 @@
 // against hand-computed cases, the readers against good and bad inputs, and a small run end to end.
 #include <gtest/gtest.h>
 
+#include <ogrsf_frmts.h>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <sstream>
 #include <string>
 
 #include "libassess/GeoRaster.hpp"
@@ -317,6 +321,67 @@ TEST_F(Hazard, SmallSlopeEndToEnd) {
     o.outDir = (dir_ / "holed").string();
     EXPECT_NE(errorOf([&] { runHazard(o); }).find("the DTM has 1 NODATA cell(s)"), std::string::npos);
     EXPECT_FALSE(fs::exists(dir_ / "holed"));
+}
+
+// The outputs beside the rasters, on the small slope: a check line just below the release that every
+// block crosses and one far down that fewer cross (the forest's blocks fewer than the bare ones), each
+// block's path and tree impacts in the GeoPackage (as many paths as blocks, as many impacts as the
+// summary counts), the VTK files; all of it the same on 1 and 2 threads.
+TEST_F(Hazard, CheckLinesTrajectoriesAndVtkFollowTheBlocks) {
+    const std::string slope = dtm("slope.asc", 60, 20, 5.0, 0, 0, [](int c, int) { return 300.0 - 5 * c * std::tan(0.6 - 0.004 * c); });
+    std::string trees = "x,y,dbh_cm\n";
+    for (int i = 0; i < 400; ++i) trees += std::to_string(60 + 7 * (i % 20) + (i / 20 % 2) * 3.5) + "," + std::to_string(5 + 4.5 * (i / 20)) + ",25\n";
+    const std::string lines = write("lines.geojson", R"({"type": "FeatureCollection", "features": [
+        {"type": "Feature", "properties": {"name": "near"}, "geometry": {"type": "LineString", "coordinates": [[25, 0], [25, 100]]}},
+        {"type": "Feature", "properties": {"name": "far"}, "geometry": {"type": "LineString", "coordinates": [[150, 0], [150, 100]]}}]})");
+    HazardOptions o;
+    o.dtmPath = slope;
+    o.releasePath = polygon("release.geojson", 10, 40, 20, 60);
+    o.treesPath = write("trees.csv", trees);
+    o.model = sylva::dem::Model::Lumped;
+    o.runsPerCell = 25;
+    o.seed = 4;
+    o.compareBare = true;
+    o.checkLinesPath = lines;
+    o.writeTrajectories = true;
+    o.writeVtk = true;
+    o.threads = 1;
+    o.outDir = (dir_ / "one").string();
+    const HazardResults one = runHazard(o);
+    o.threads = 2;
+    o.outDir = (dir_ / "two").string();
+    runHazard(o);
+    const auto read = [](const fs::path& p) {
+        std::ifstream in(p);
+        return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    };
+    for (const char* f : {"check_lines.csv", "check_lines_summary.csv", "vtk/paths_forest.vtk", "vtk/paths_bare.vtk", "vtk/terrain.vtk", "vtk/trees.vtk"})
+        EXPECT_EQ(read(dir_ / "one" / f), read(dir_ / "two" / f)) << f;
+    // pass,line,blocks,crossings,fraction,...
+    std::istringstream summary(read(dir_ / "one/check_lines_summary.csv"));
+    std::string header, row;
+    std::getline(summary, header);
+    std::map<std::string, long> crossings;
+    while (std::getline(summary, row)) {
+        std::stringstream cells(row);
+        std::string pass, line, blocks, crossed;
+        std::getline(cells, pass, ',');
+        std::getline(cells, line, ',');
+        std::getline(cells, blocks, ',');
+        std::getline(cells, crossed, ',');
+        EXPECT_EQ(blocks, "200");
+        crossings[pass + " " + line] = std::stol(crossed);
+    }
+    EXPECT_EQ(crossings.at("forest near"), 200);
+    EXPECT_EQ(crossings.at("bare near"), 200);
+    EXPECT_LT(crossings.at("forest far"), crossings.at("bare far"));
+    GDALDatasetUniquePtr gpkg(GDALDataset::Open((dir_ / "one/trajectories.gpkg").c_str(), GDAL_OF_VECTOR));
+    ASSERT_TRUE(gpkg);
+    EXPECT_EQ(gpkg->GetLayerCount(), 4);
+    EXPECT_EQ(gpkg->GetLayerByName("paths_forest")->GetFeatureCount(), 200);
+    EXPECT_EQ(gpkg->GetLayerByName("paths_bare")->GetFeatureCount(), 200);
+    EXPECT_EQ(gpkg->GetLayerByName("impacts_forest")->GetFeatureCount(), one.passes.at(0).treeImpacts);
+    EXPECT_EQ(gpkg->GetLayerByName("impacts_bare")->GetFeatureCount(), 0);
 }
 
 TEST_F(Hazard, BlockVolumesAreAListOfVolumesWithOptionalWeights) {

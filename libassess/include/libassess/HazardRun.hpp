@@ -34,6 +34,9 @@ struct HazardOptions {
     std::uint64_t seed = 1;
     int threads = 0;
     bool compareBare = false;  // also without the forest, and the forest's protection map
+    std::string checkLinesPath;     // optional: lines whose crossings are tallied (CheckLines.hpp)
+    bool writeTrajectories = false; // trajectories.gpkg: each block's path and its tree impacts (BlockPaths.hpp)
+    bool writeVtk = false;          // vtk/: the terrain, the stems and the paths for ParaView
     std::string outDir;
     std::function<void(const std::string&)> onNote;
     std::function<void(const std::string& pass, int done, int total)> onRunDone;
@@ -53,6 +56,7 @@ struct HazardResults {
     std::vector<StandPolygon> stands;  // with standsPath; their forest is written to outDir/forest.csv
     std::vector<HazardPass> passes;  // the forest (or the bare slope without trees), then bare with compareBare
     std::vector<std::string> rasters;  // written, relative to outDir
+    std::vector<std::string> files;    // the other outputs asked for (check lines, trajectories, vtk/), relative to outDir
     std::string figureWarning;         // why map.svg is missing (no gnuplot), empty if drawn
 };
 

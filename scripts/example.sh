@@ -22,8 +22,10 @@ echo "   (15 runs x 2 forests per stand and structure: wide intervals; the paper
 # --resume: a second run of this script finishes or reuses the campaign instead of refusing out/assess.
 "$exe" assess --stand data/stands/GR1 --stand data/stands/PY1 --scene data/scenes/no-forest.ini \
   --runs 15 --realisations 2 --baseline-runs 200 --seed 1 --resume --out out/assess
-echo "== Hazard maps on a DTM (out/hazard/): blocks from a release polygon through an MO1 forest and without it, the"
-echo "   lumped-mass model (seconds; --model dem for the DEM's trees, minutes), GeoTIFF rasters on the DTM's grid and map.svg"
+echo "== Hazard maps on a DTM (out/hazard/): blocks from a release polygon through two stands (MO1 A above GR1 NA, their"
+echo "   forests drawn in their polygons) and without them, two check lines; the lumped-mass model (seconds; --model dem"
+echo "   for the DEM's trees, minutes); GeoTIFF rasters on the DTM's grid, check_lines_summary.csv, map.png"
 rm -rf out/hazard
-"$exe" hazard --dtm data/hazard/slope.tif --release data/hazard/release.geojson --trees data/hazard/trees.csv \
-  --scene data/scenes/no-forest.ini --model lumped --runs-per-cell 20 --compare-bare --seed 1 --out out/hazard
+"$exe" hazard --dtm data/hazard/slope.tif --release data/hazard/release.geojson --stands data/hazard/stands.geojson \
+  --check-lines data/hazard/check-lines.geojson --scene data/scenes/no-forest.ini --model lumped --runs-per-cell 20 \
+  --compare-bare --seed 1 --out out/hazard

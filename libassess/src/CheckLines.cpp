@@ -282,4 +282,18 @@ void CheckLineTally::write(const std::string& dir) const {
     close(summary, summaryPath);
 }
 
+std::vector<CheckLineTally::LineSample> CheckLineTally::samples() const {
+    std::vector<LineSample> all;
+    for (const auto& p : passes_)
+        for (std::size_t l = 0; l < lines_.size(); ++l) {
+            LineSample s{p.name, lines_[l].name, std::max(0L, p.blocks), {}, {}};
+            for (const auto& r : p.byLine[l]) {
+                s.energyKj.push_back(r.crossing.energyKj);
+                s.heightM.push_back(r.crossing.heightM);
+            }
+            all.push_back(std::move(s));
+        }
+    return all;
+}
+
 }  // namespace sylva::assess

@@ -319,23 +319,38 @@ HazardResults runHazard(const HazardOptions& o) {
     results.rasters = writeRasters(o.outDir, map, dtm, forested);
     const FigureSet figure = drawHazardMap(o.outDir, dtm, map.reachProbability(), scene.forest());
     results.figureWarning = figure.warning;
+    std::vector<float> protection;  // with compareBare
     if (o.compareBare) {
         const dem::Scene bare(config, dtm.elevation);
         HazardMap bareMap(dtm.grid);
         results.passes.push_back(runPass("bare", BlockClasses(bare, o.blockVolumes), dtm, cells, o, bareMap, outputs));
         for (const auto& name : writeRasters(o.outDir + "/bare", bareMap, dtm, false)) results.rasters.push_back("bare/" + name);
         // What the forest takes off the reach probability: bare minus forest, in [-1, 1].
-        std::vector<float> protection = bareMap.reachProbability();
+        protection = bareMap.reachProbability();
         const std::vector<float> withForest = map.reachProbability();
         for (std::size_t i = 0; i < protection.size(); ++i) protection[i] -= withForest[i];
         writeGeoTiff(o.outDir + "/protection.tif", dtm.grid, protection, kNoData, "protection");
         results.rasters.push_back("protection.tif");
     }
 
+    {
+        std::vector<RasterPanel> panels{{"reach probability", map.reachProbability()},
+                                        {"95th percentile of the energy (kJ)", map.energyP95Kj(kNoData)},
+                                        {"95th percentile of the passing height (m)", map.heightP95M(kNoData)},
+                                        {"blocks at rest", map.deposits()}};
+        if (forested) panels.push_back({"tree impacts", map.treeImpacts()});
+        if (!protection.empty()) panels.push_back({"protection: reach probability without minus with the forest", protection, kNoData, true});
+        const FigureSet rasterFigure = drawRasterPanels(o.outDir, dtm, panels);
+        for (const auto& f : rasterFigure.files) results.files.push_back(f);
+        if (!rasterFigure.warning.empty()) results.figureWarning += (results.figureWarning.empty() ? "" : "; ") + rasterFigure.warning;
+    }
     if (tally) {
         tally->write(o.outDir);
         results.files.push_back("check_lines.csv");
         results.files.push_back("check_lines_summary.csv");
+        const FigureSet lineFigure = drawCheckLines(o.outDir, tally->samples());
+        for (const auto& f : lineFigure.files) results.files.push_back(f);
+        if (!lineFigure.warning.empty()) results.figureWarning += (results.figureWarning.empty() ? "" : "; ") + lineFigure.warning;
     }
     if (o.writeTrajectories) results.files.push_back("trajectories.gpkg");
     if (o.writeVtk) results.files.push_back("vtk/");

@@ -272,6 +272,7 @@ TEST_F(Hazard, SmallSlopeEndToEnd) {
     png.read(magic.data(), 4);
     EXPECT_EQ(magic, "\x89PNG");
     EXPECT_GT(fs::file_size(dir_ / "one/map.svg"), 1000u);
+    EXPECT_GT(fs::file_size(dir_ / "one/rasters.png"), 1000u);
     ASSERT_EQ(one.passes.size(), 2u);
     EXPECT_EQ(one.passes[0].blocks, 200);
     EXPECT_GT(one.passes[0].treeImpacts, 0);
@@ -372,6 +373,10 @@ TEST_F(Hazard, CheckLinesTrajectoriesAndVtkFollowTheBlocks) {
         EXPECT_EQ(blocks, "200");
         crossings[pass + " " + line] = std::stol(crossed);
     }
+    // ... and drawn as exceedance curves (gnuplot-nox is installed by scripts/install-deps.sh).
+    EXPECT_EQ(one.figureWarning, "");
+    EXPECT_NE(std::find(one.files.begin(), one.files.end(), "check_lines.png"), one.files.end());
+    EXPECT_GT(fs::file_size(dir_ / "one/check_lines.svg"), 1000u);
     EXPECT_EQ(crossings.at("forest near"), 200);
     EXPECT_EQ(crossings.at("bare near"), 200);
     EXPECT_LT(crossings.at("forest far"), crossings.at("bare far"));

@@ -69,6 +69,15 @@ public:
     // without setBlocks.
     void write(const std::string& dir) const;
 
+    // What crossed one line in one pass, for the figure (HazardFigure.hpp).
+    struct LineSample {
+        std::string pass, line;
+        long blocks = 0;                     // of the pass
+        std::vector<float> energyKj, heightM;  // of each block that crossed, in run order
+    };
+    // Passes in the order they were first named, lines in their order.
+    std::vector<LineSample> samples() const;
+
 private:
     struct Row {
         long run;

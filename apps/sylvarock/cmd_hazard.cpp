@@ -29,6 +29,10 @@ int runHazardCommand(int argc, const char* const* argv) {
         ("compare-bare", po::bool_switch(), "also run without the trees: rasters in OUT/bare/ and the forest's protection map OUT/protection.tif")
         ("block-volumes", po::value<std::string>(), "a block-volume distribution: V1,V2,... m3 equally likely, or V1:W1,V2:W2,... with weights "
                           "(relative frequencies); each block draws its class; shape from the scene (a cuboid scaled alike); default: the scene's block")
+        ("soil-types", po::value<std::string>(), "soil types: a CSV name,code[,kn_n_m,kappa,damping_ratio|restitution,friction_deg] of named "
+                       "block/soil contact parameters (the scene's [soil] for those not given); with --soils, DEM only")
+        ("soils", po::value<std::string>(), "where the soil types are: polygons with a field `soil` (a type's name) or a raster of their codes, "
+                  "in the DTM's CRS; elsewhere the scene's [soil]")
         ("check-lines", po::value<std::string>(), "lines (a line layer in the DTM's CRS, named by a field `name`) where a barrier or a road would go: "
                         "the energy, passing height and speed of each block's first crossing in OUT/check_lines.csv, their distribution per line "
                         "(p50/p95/p99) in OUT/check_lines_summary.csv")
@@ -44,7 +48,7 @@ int runHazardCommand(int argc, const char* const* argv) {
     po::variables_map vm;
     if (!parse(argc, argv, o, vm,
                "sylvarock hazard --dtm DTM --release RELEASE.geojson|RELEASE.tif --runs-per-cell N --out DIR [--trees POINTS | --stands POLYGONS] "
-               "[--compare-bare] [--check-lines LINES] [--trajectories] [--vtk] [--block-volumes V1:W1,...] [--model dem|lumped] [--seed S] [--threads T]",
+               "[--compare-bare] [--soil-types T.csv --soils MAP] [--check-lines LINES] [--trajectories] [--vtk] [--block-volumes V1:W1,...] [--model dem|lumped] [--seed S] [--threads T]",
                "  sylvarock hazard --dtm data/hazard/slope.tif --release data/hazard/release.geojson --stands data/hazard/stands.geojson \\\n"
                "      --check-lines data/hazard/check-lines.geojson --runs-per-cell 5 --compare-bare --seed 1 --out out/hazard\n"
                "  sylvarock hazard ... --trees data/hazard/trees.csv --model lumped --runs-per-cell 100 --block-volumes 0.2:6,1:3,5:1 --trajectories --out out/hz2\n"
@@ -65,6 +69,8 @@ int runHazardCommand(int argc, const char* const* argv) {
     h.seed = vm["seed"].as<Seed>().value;
     h.threads = threadCount(vm);
     h.compareBare = vm["compare-bare"].as<bool>();
+    if (vm.count("soil-types")) h.soilTypesPath = vm["soil-types"].as<std::string>();
+    if (vm.count("soils")) h.soilMapPath = vm["soils"].as<std::string>();
     if (vm.count("check-lines")) h.checkLinesPath = vm["check-lines"].as<std::string>();
     h.writeTrajectories = vm["trajectories"].as<bool>();
     h.writeVtk = vm["vtk"].as<bool>();

@@ -28,6 +28,17 @@ GDALDatasetUniquePtr openVectorFile(const std::string& path) {
     return ds;
 }
 
+GDALDatasetUniquePtr openVectorUnlessRaster(const std::string& path) {
+    initGdal();
+    CPLErrorReset();
+    GDALDatasetUniquePtr vector(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
+    if (vector && vector->GetLayerCount() > 0) return vector;
+    CPLErrorReset();
+    if (!GDALDatasetUniquePtr(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY)))
+        throw InputError(path, 0, unreadable("polygons or a raster"));
+    return nullptr;
+}
+
 void requireDtmCrs(OGRLayer& layer, const std::string& path, const Dtm& dtm) {
     const std::string crs = wktOf(layer.GetSpatialRef());
     OGREnvelope e;

@@ -4,6 +4,8 @@
 #include <gdal_priv.h>
 #include <ogrsf_frmts.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "libassess/GeoRaster.hpp"
@@ -19,9 +21,31 @@ std::string unreadable(const std::string& what);
 // InputError naming the file if OGR cannot open it as vector data.
 GDALDatasetUniquePtr openVectorFile(const std::string& path);
 
+// For inputs that may be polygons or a raster (release areas, soil maps): the file as vector data if
+// GDAL opens it so (with a layer), else null when it is a raster; InputError naming the file if it is neither.
+GDALDatasetUniquePtr openVectorUnlessRaster(const std::string& path);
+
 // InputError naming the file and the layer when the layer's CRS is not the DTM's. A GeoJSON without a
 // "crs" member is WGS 84 by its standard (RFC 7946) and GDAL says so; when its coordinates cannot be
 // degrees, it was written in a projected CRS without saying which, and is taken to be in the DTM's.
 void requireDtmCrs(OGRLayer& layer, const std::string& path, const Dtm& dtm);
+
+// Calls visit(column, row) for each cell of the grid whose centre lies inside the polygon.
+template <class Visit>
+void forEachCellCentreInside(const OGRGeometry& polygon, const RasterGrid& grid, Visit visit) {
+    OGREnvelope e;
+    polygon.getEnvelope(&e);
+    const double cell = grid.cellSize(), x0 = grid.geoTransform[0], y0 = grid.geoTransform[3];
+    const int c0 = std::max(0, static_cast<int>(std::floor((e.MinX - x0) / cell))),
+              c1 = std::min(grid.columns - 1, static_cast<int>(std::floor((e.MaxX - x0) / cell)));
+    const int r0 = std::max(0, static_cast<int>(std::floor((y0 - e.MaxY) / cell))),
+              r1 = std::min(grid.rows - 1, static_cast<int>(std::floor((y0 - e.MinY) / cell)));
+    for (int r = r0; r <= r1; ++r)
+        for (int c = c0; c <= c1; ++c) {
+            const Eigen::Vector2d p = grid.centre(c, r);
+            OGRPoint point(p.x(), p.y());
+            if (polygon.Contains(&point)) visit(c, r);
+        }
+}
 
 }  // namespace sylva::assess

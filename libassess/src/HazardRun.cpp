@@ -18,6 +18,7 @@
 #include "libassess/HazardFigure.hpp"
 #include "libassess/HazardMap.hpp"
 #include "libassess/ReleaseArea.hpp"
+#include "libassess/SoilMap.hpp"
 #include "libassess/TreePoints.hpp"
 #include "libcommon/InputError.hpp"
 #include "libcommon/SeededRandom.hpp"
@@ -286,6 +287,16 @@ HazardResults runHazard(const HazardOptions& o) {
     if (!config.forestFile.empty()) throw InputError(o.sceneFile, 0, "the scene places a forest: give the trees with --trees");
     if (config.launch.enabled) throw InputError("a single-tree launch (block.speed_m_s) has no place in a hazard map");
     config.trajectoryInterval = std::min(config.trajectoryInterval, kMaxSampleInterval);
+    std::shared_ptr<dem::SoilZones> soils;
+    if (o.soilTypesPath.empty() != o.soilMapPath.empty())
+        throw InputError(o.soilTypesPath.empty() ? "--soils needs --soil-types (the table of the types it names)"
+                                                 : "--soil-types needs --soils (the map placing them)");
+    if (!o.soilMapPath.empty()) {
+        if (o.model != dem::Model::Dem)
+            throw InputError("--soils sets the DEM's block/soil contacts; the lumped model's rebound is calibrated as a whole (docs/lumped.md): "
+                             "use --model dem");
+        soils = readSoilZones(o.soilMapPath, readSoilTypes(o.soilTypesPath, config.soilContact), dtm, config.soilContact);
+    }
     if (!o.treesPath.empty() && !o.standsPath.empty())
         throw InputError("--trees and --stands both give the forest: give one (generate the stands' forest with --stands alone, its trees are "
                          "written to OUT/forest.csv)");
@@ -306,7 +317,9 @@ HazardResults runHazard(const HazardOptions& o) {
     results.releaseCells = static_cast<long>(cells.size());
     results.trees = static_cast<long>(forest.trees.size());
     const bool forested = !forest.trees.empty();
-    const dem::Scene scene(config, dtm.elevation, std::move(forest));
+    // The ground is the same with and without the trees: both passes on the soil map.
+    const auto onSoils = [&soils](dem::Scene s) { return soils ? s.withSoilZones(soils) : s; };
+    const dem::Scene scene = onSoils(dem::Scene(config, dtm.elevation, std::move(forest)));
     std::optional<CheckLineTally> tally;
     if (!lines.empty()) tally.emplace(lines);
     PassOutputs outputs;
@@ -321,7 +334,7 @@ HazardResults runHazard(const HazardOptions& o) {
     results.figureWarning = figure.warning;
     std::vector<float> protection;  // with compareBare
     if (o.compareBare) {
-        const dem::Scene bare(config, dtm.elevation);
+        const dem::Scene bare = onSoils(dem::Scene(config, dtm.elevation));
         HazardMap bareMap(dtm.grid);
         results.passes.push_back(runPass("bare", BlockClasses(bare, o.blockVolumes), dtm, cells, o, bareMap, outputs));
         for (const auto& name : writeRasters(o.outDir + "/bare", bareMap, dtm, false)) results.rasters.push_back("bare/" + name);
@@ -372,6 +385,15 @@ HazardResults runHazard(const HazardOptions& o) {
         }
     }
     j["trees"] = results.trees;
+    if (soils) {
+        j["soil_types"] = o.soilTypesPath;
+        j["soil_map"] = o.soilMapPath;
+        std::vector<long> cells(soils->names.size(), 0);
+        for (const auto z : soils->zone) ++cells[z];
+        for (std::size_t k = 0; k < cells.size(); ++k)
+            j["soils"].push_back({{"name", soils->names[k]}, {"dtm_cells", cells[k]}, {"kn_n_m", soils->params[k].kn},
+                                  {"damping_ratio", soils->params[k].dampingRatio}, {"friction_deg", soils->params[k].frictionDeg}});
+    }
     if (!o.standsPath.empty()) {
         j["stands_file"] = o.standsPath;
         j["stands"] = nlohmann::ordered_json::array();

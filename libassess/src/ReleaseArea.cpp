@@ -26,21 +26,7 @@ std::vector<char> cellsInPolygons(GDALDataset& ds, const std::string& path, cons
     }
     if (polygons.empty()) throw InputError(path, 0, "no polygon in the file: a release area is a polygon layer");
     std::vector<char> inside(static_cast<std::size_t>(grid.columns) * grid.rows, 0);
-    for (const auto& polygon : polygons) {
-        OGREnvelope e;
-        polygon->getEnvelope(&e);
-        const double cell = grid.cellSize(), x0 = grid.geoTransform[0], y0 = grid.geoTransform[3];
-        const int c0 = std::max(0, static_cast<int>(std::floor((e.MinX - x0) / cell))),
-                  c1 = std::min(grid.columns - 1, static_cast<int>(std::floor((e.MaxX - x0) / cell)));
-        const int r0 = std::max(0, static_cast<int>(std::floor((y0 - e.MaxY) / cell))),
-                  r1 = std::min(grid.rows - 1, static_cast<int>(std::floor((y0 - e.MinY) / cell)));
-        for (int r = r0; r <= r1; ++r)
-            for (int c = c0; c <= c1; ++c) {
-                const Eigen::Vector2d p = grid.centre(c, r);
-                OGRPoint point(p.x(), p.y());
-                if (!inside[grid.index(c, r)] && polygon->Contains(&point)) inside[grid.index(c, r)] = 1;
-            }
-    }
+    for (const auto& polygon : polygons) forEachCellCentreInside(*polygon, grid, [&](int c, int r) { inside[grid.index(c, r)] = 1; });
     return inside;
 }
 
@@ -67,19 +53,8 @@ std::vector<char> cellsOnRaster(const std::string& path, const Dtm& dtm) {
 }  // namespace
 
 std::vector<ReleaseCell> readReleaseCells(const std::string& path, const Dtm& dtm) {
-    initGdal();
-    CPLErrorReset();
-    GDALDatasetUniquePtr vector(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
-    std::vector<char> inside;
-    if (vector && vector->GetLayerCount() > 0) {
-        inside = cellsInPolygons(*vector, path, dtm);
-    } else {
-        CPLErrorReset();
-        GDALDatasetUniquePtr raster(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
-        if (!raster) throw InputError(path, 0, unreadable("polygons or a raster"));
-        raster.reset();
-        inside = cellsOnRaster(path, dtm);
-    }
+    GDALDatasetUniquePtr vector = openVectorUnlessRaster(path);
+    const std::vector<char> inside = vector ? cellsInPolygons(*vector, path, dtm) : cellsOnRaster(path, dtm);
     const RasterGrid& grid = dtm.grid;
     std::vector<ReleaseCell> cells;
     for (int r = 0; r < grid.rows; ++r)

@@ -76,7 +76,7 @@ BlockMotion::BlockMotion(const Scene& scene, const Release& start)
         throw InputError(cfg_.sourceFile, 0, os.str() + ": raise release.fall_height_m");
     }
     refuseStartInsideStem(scene);
-    anticipatedStiffness_ = cfg_.integration.anticipatedContacts * law_.normalStiffness(ContactGeometry{});
+    anticipatedStiffness_ = cfg_.integration.anticipatedContacts * law_.largestNormalStiffness();
     budget_.initialTotal = block_.kineticEnergy() + block_.mass() * cfg_.gravity * block_.position.z();
     lastBlockSide_ = budget_.initialTotal;
 }

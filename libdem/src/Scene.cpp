@@ -63,20 +63,31 @@ Scene::Scene(SceneConfig config, std::shared_ptr<const SoilBed> soil, stand::For
 
 // The soil's law takes the block's mass (its dashpot, Eq. 16): set again when the block changes.
 void Scene::setContactLaws() {
-    laws_.set(BodyKind::Block, BodyKind::Soil, std::make_shared<SoilContact>(config_.soilContact, block_.mass()));
+    const auto soilLaw = [this]() -> std::shared_ptr<const ContactLaw> {
+        if (soilZones_) return std::make_shared<ZonedSoilContact>(soilZones_, block_.mass());
+        return std::make_shared<SoilContact>(config_.soilContact, block_.mass());
+    };
+    laws_.set(BodyKind::Block, BodyKind::Soil, soilLaw());
     if (!forest_.trees.empty()) {
         laws_.set(BodyKind::Block, BodyKind::Stem, std::make_shared<BlockStemContact>(config_.stemContact));
         laws_.set(BodyKind::Stem, BodyKind::Stem, std::make_shared<StemStemContact>(config_.stemContact));
         // Stems and broken pieces on the ground: the soil's law as under the block, its dashpot a
         // fraction of the critical one of each stem node (Eq. 16 with the node's mass,
         // ContactGeometry::movingMass), so that falling pieces lose energy on landing as a block does.
-        laws_.set(BodyKind::Stem, BodyKind::Soil, std::make_shared<SoilContact>(config_.soilContact, block_.mass()));
+        laws_.set(BodyKind::Stem, BodyKind::Soil, soilLaw());
     }
 }
 
 Scene Scene::withLumped(const LumpedParams& params) const {
     Scene s(*this);
     s.config_.lumped = params;
+    return s;
+}
+
+Scene Scene::withSoilZones(std::shared_ptr<const SoilZones> zones) const {
+    Scene s(*this);
+    s.soilZones_ = std::move(zones);
+    s.setContactLaws();
     return s;
 }
 

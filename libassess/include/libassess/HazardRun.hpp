@@ -34,6 +34,7 @@ struct HazardOptions {
     std::uint64_t seed = 1;
     int threads = 0;
     bool compareBare = false;  // also without the forest, and the forest's protection map
+    std::string soilTypesPath, soilMapPath;  // optional, together: the ground's contact parameters by place (SoilMap.hpp)
     std::string checkLinesPath;     // optional: lines whose crossings are tallied (CheckLines.hpp)
     bool writeTrajectories = false; // trajectories.gpkg: each block's path and its tree impacts (BlockPaths.hpp)
     bool writeVtk = false;          // vtk/: the terrain, the stems and the paths for ParaView

@@ -6,6 +6,7 @@
 #include "libdem/ContactLawTable.hpp"
 #include "libdem/ElevationGrid.hpp"
 #include "libdem/SceneConfig.hpp"
+#include "libdem/SoilZones.hpp"
 #include "libdem/TreeField.hpp"
 #include "libstand/Forest.hpp"
 
@@ -32,6 +33,11 @@ public:
     // The same scene with a block of another volume and the same shape (a cuboid's edges scaled
     // alike), its contact laws set for the new mass; the soil bed is shared. InputError if volumeM3 <= 0.
     Scene withBlockVolume(double volumeM3) const;
+    // The same scene on a soil map: the block/soil and stem/soil contacts take the parameters of
+    // the zone under them (SoilZones.hpp) instead of the scene's [soil]. InputError for a zone's
+    // unusable parameters.
+    Scene withSoilZones(std::shared_ptr<const SoilZones> zones) const;
+    const SoilZones* soilZones() const { return soilZones_.get(); }
 
 private:
     Scene(SceneConfig config, std::shared_ptr<const SoilBed> soil, stand::Forest forest);
@@ -42,6 +48,7 @@ private:
     ContactLawTable laws_;
     stand::Forest forest_;
     TreeField trees_;
+    std::shared_ptr<const SoilZones> soilZones_;  // none: the scene's [soil] everywhere
 };
 
 }  // namespace sylva::dem

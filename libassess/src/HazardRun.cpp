@@ -376,6 +376,7 @@ HazardResults runHazard(const HazardOptions& o) {
     j["runs_per_cell"] = o.runsPerCell;
     j["model"] = dem::toString(o.model);
     j["seed"] = o.seed;
+    j["microtopography_m"] = {{"sd", config.terrain.micro.sigma}, {"correlation_length", config.terrain.micro.lengthM}};
     if (!o.blockVolumes.empty()) {
         j["block_volumes"] = nlohmann::ordered_json::array();
         for (std::size_t k = 0; k < o.blockVolumes.size(); ++k) {

@@ -28,16 +28,26 @@ stand::Forest chooseForest(const SceneConfig& c, stand::Forest given) {
     return given;
 }
 
+// The soil bed on a DTM, with the micro-topography the scene asks for (its seed the bed's).
+std::shared_ptr<const SoilBed> bedOnGrid(const TerrainConfig& t, const ElevationGrid& dtm) {
+    MicroTopographyParams micro = t.micro;
+    micro.seed = t.soil.seed;
+    return std::make_shared<SoilBed>(SoilBed::fromGrid(withMicroTopography(dtm, micro), t.soil));
+}
 std::shared_ptr<const SoilBed> buildSoil(const TerrainConfig& t) {
     if (t.profile.empty() == t.dtm.empty())
         throw InputError("the scene needs exactly one of terrain.profile or terrain.dtm");
-    if (!t.profile.empty()) return std::make_shared<SoilBed>(SoilBed::fromProfile(SlopeProfile::readCsv(t.profile), t.soil));
-    return std::make_shared<SoilBed>(SoilBed::fromGrid(ElevationGrid::readAsc(t.dtm), t.soil));
+    if (!t.profile.empty()) {
+        if (t.micro.sigma > 0)
+            throw InputError("terrain.microtopography_m is added to DTMs; a profile carries its own (data/slopes/make_standin.py --sigma)");
+        return std::make_shared<SoilBed>(SoilBed::fromProfile(SlopeProfile::readCsv(t.profile), t.soil));
+    }
+    return bedOnGrid(t, ElevationGrid::readAsc(t.dtm));
 }
 std::shared_ptr<const SoilBed> soilOn(const TerrainConfig& t, const ElevationGrid& dtm) {
     if (!t.profile.empty() || !t.dtm.empty())
         throw InputError("the scene names a terrain (" + (t.profile.empty() ? t.dtm : t.profile) + ") and another DTM is given: give one terrain");
-    return std::make_shared<SoilBed>(SoilBed::fromGrid(dtm, t.soil));
+    return bedOnGrid(t, dtm);
 }
 }  // namespace
 

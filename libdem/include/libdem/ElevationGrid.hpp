@@ -43,6 +43,8 @@ public:
     int columns() const { return ncols_; }
     int rows() const { return nrows_; }
     const std::string& source() const { return source_; }
+    // Every cell's height, row-major with row 0 the southernmost, NaN for NODATA.
+    const std::vector<double>& values() const { return z_; }
 
 private:
     struct CellRange {

@@ -5,6 +5,7 @@
 
 #include "libdem/BlockShape.hpp"
 #include "libdem/LumpedParams.hpp"
+#include "libdem/MicroTopography.hpp"
 #include "libdem/SoilContact.hpp"
 #include "libdem/StemContact.hpp"
 #include "libdem/StemParams.hpp"
@@ -16,6 +17,7 @@ struct TerrainConfig {
     std::string profile;  // slope profile CSV (x,z); paths are relative to the scene file
     std::string dtm;      // or an ESRI ASCII grid
     SoilBedParams soil;
+    MicroTopographyParams micro;  // added to a DTM (its seed is soil.seed)
 };
 
 struct ReleaseConfig {

@@ -43,12 +43,14 @@ int runHazardCommand(int argc, const char* const* argv) {
         ("scene", po::value<std::string>(), "scene INI for the block, contact laws and stems (its terrain, if any, is replaced by --dtm); default: the built-in values")
         ("set", po::value(&sets)->composing(), "override a scene key: --set section.key=value (repeatable; sylvarock simulate --help-scene lists them)")
         ("seed", po::value<Seed>()->default_value(Seed{}, "1"), "seed; run i's release point and draws derive from (seed, i)")
+        ("resume", po::bool_switch(), "finish an interrupted map in --out (kept run by run in OUT/hazard.sqlite): only the runs it lacks are run, "
+                   "the outputs are those of an uninterrupted map; refused if any input differs")
         ("threads", po::value<int>()->default_value(0), "worker threads (0: all cores); results do not depend on it")
         ("out", po::value<std::string>(), "output folder (new or empty): reach_probability.tif, passing_count.tif, deposits.tif, energy_p95_kj.tif, height_p95_m.tif, tree_impacts.tif, summary.json");
     po::variables_map vm;
     if (!parse(argc, argv, o, vm,
                "sylvarock hazard --dtm DTM --release RELEASE.geojson|RELEASE.tif --runs-per-cell N --out DIR [--trees POINTS | --stands POLYGONS] "
-               "[--compare-bare] [--soil-types T.csv --soils MAP] [--check-lines LINES] [--trajectories] [--vtk] [--block-volumes V1:W1,...] [--model dem|lumped] [--seed S] [--threads T]",
+               "[--compare-bare] [--soil-types T.csv --soils MAP] [--check-lines LINES] [--trajectories] [--vtk] [--block-volumes V1:W1,...] [--model dem|lumped] [--seed S] [--threads T] [--resume]",
                "  sylvarock hazard --dtm data/hazard/slope.tif --release data/hazard/release.geojson --stands data/hazard/stands.geojson \\\n"
                "      --check-lines data/hazard/check-lines.geojson --runs-per-cell 5 --compare-bare --seed 1 --out out/hazard\n"
                "  sylvarock hazard ... --trees data/hazard/trees.csv --model lumped --runs-per-cell 100 --block-volumes 0.2:6,1:3,5:1 --trajectories --out out/hz2\n"
@@ -75,6 +77,7 @@ int runHazardCommand(int argc, const char* const* argv) {
     h.writeTrajectories = vm["trajectories"].as<bool>();
     h.writeVtk = vm["vtk"].as<bool>();
     h.outDir = vm["out"].as<std::string>();
+    h.resume = vm["resume"].as<bool>();
     h.onNote = [](const std::string& text) { std::cerr << "sylvarock hazard: " << text << "\n"; };
     ProgressBar progress(stderrIsTerminal());
     h.onRunDone = [&progress](const std::string& pass, int done, int total) { progress.update(done, total, pass); };

@@ -7,14 +7,18 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <sstream>
 #include <unordered_map>
 
+#include "Bytes.hpp"
+#include "HazardStore.hpp"
 #include "libassess/BlockPaths.hpp"
 #include "libassess/CheckLines.hpp"
 #include "libassess/GeoRaster.hpp"
+#include "libassess/Hashing.hpp"
 #include "libassess/HazardFigure.hpp"
 #include "libassess/HazardMap.hpp"
 #include "libassess/ReleaseArea.hpp"
@@ -46,12 +50,47 @@ constexpr long kMostRuns = 1000000;
 constexpr double kPathSpacingM = 1.0, kPathGapS = 0.5;
 constexpr long kMostRunsWithPaths = 100000;
 
-// Empty or new: a hazard run never mixes its rasters with someone else's files.
-void prepareOutDir(const std::string& dir) {
+// Empty or new: a hazard run never mixes its rasters with someone else's files. Resumed: the map's own
+// folder, whose path and VTK files are written again whole.
+void prepareOutDir(const std::string& dir, bool resume) {
     if (dir.empty()) throw InputError("--out DIR is required");
+    if (resume) {
+        if (!fs::is_regular_file(fs::path(dir) / "hazard.sqlite"))
+            throw InputError("--resume: " + dir + " holds no map to resume (no hazard.sqlite): give the --out of the interrupted map");
+        fs::remove(fs::path(dir) / "trajectories.gpkg");
+        fs::remove_all(fs::path(dir) / "vtk");
+        return;
+    }
     if (fs::exists(dir) && (!fs::is_directory(dir) || !fs::is_empty(dir)))
-        throw InputError("--out " + dir + " exists and is not an empty folder: use another --out");
+        throw InputError("--out " + dir + " exists and is not an empty folder: use another --out (or --resume an interrupted map)");
     fs::create_directories(dir);
+}
+
+std::string hashOf(const std::string& path) { return path.empty() ? "none" : toHex(fileFingerprint(path), 16); }
+
+// Everything the maps depend on, a line each, as the store keeps it: a resumed map must be the same
+// map. Files by their contents (a moved file is the same input), the forest by its stems.
+std::vector<std::string> inputsOf(const HazardOptions& o, const stand::Forest& forest) {
+    std::string stems;
+    for (const auto& t : forest.trees) stems += exactText(t.x) + ' ' + exactText(t.y) + ' ' + exactText(t.dbhCm) + ' ' + std::to_string(t.stool.value_or(0)) + '\n';
+    std::string volumes;
+    for (const auto& v : o.blockVolumes) volumes += exactText(v.volumeM3) + ':' + exactText(v.weight) + ' ';
+    std::vector<std::string> lines{"sylvarock hazard store 1",
+                                   "dtm " + hashOf(o.dtmPath),
+                                   "release " + hashOf(o.releasePath),
+                                   "forest " + std::to_string(forest.trees.size()) + " stems " + toHex(fnv1a64(stems), 16),
+                                   "scene " + hashOf(o.sceneFile),
+                                   "model " + dem::toString(o.model),
+                                   "runs per cell " + std::to_string(o.runsPerCell),
+                                   "seed " + std::to_string(o.seed),
+                                   "block volumes " + volumes,
+                                   "soil types " + hashOf(o.soilTypesPath),
+                                   "soils " + hashOf(o.soilMapPath),
+                                   "check lines " + hashOf(o.checkLinesPath),
+                                   std::string("compare bare ") + (o.compareBare ? "yes" : "no"),
+                                   std::string("trajectories ") + (o.writeTrajectories || o.writeVtk ? "kept" : "not kept")};
+    for (const auto& set : o.sceneOverrides) lines.push_back("set " + set);
+    return lines;
 }
 
 // The scene of each block-volume class (the scene itself without classes) and where each class ends
@@ -83,12 +122,77 @@ struct BlockClasses {
     }
 };
 
-// What a pass writes besides the rasters, when asked for.
+// What a pass writes besides the rasters, when asked for, and where it keeps its finished runs.
 struct PassOutputs {
     const std::vector<CheckLine>* lines = nullptr;  // with checkLines
     CheckLineTally* checkLines = nullptr;
-    bool paths = false;  // keep each block's thinned path and its tree impacts
+    bool paths = false;           // keep each block's thinned path and its tree impacts
+    HazardStore* store = nullptr;  // every finished run, for --resume
 };
+
+// All a finished run leaves to its pass.
+struct RunOutcome {
+    bool failed = false;
+    BlockTrace trace;
+    std::size_t volumeClass = 0;
+    std::vector<LineCrossing> crossings;
+    BlockPath path;
+    std::vector<ImpactPoint> impacts;
+};
+
+template <class T>
+void putAll(ByteWriter& w, const std::vector<T>& items) {
+    w.put(static_cast<std::uint64_t>(items.size()));
+    for (const T& item : items) w.put(item);
+}
+template <class T>
+std::vector<T> getAll(ByteReader& r) {
+    std::vector<T> items(r.count(sizeof(T)));
+    for (T& item : items) item = r.get<T>();
+    return items;
+}
+
+// A run as the store keeps it (HazardStore): its bytes in this machine's layout, as the MPI messages.
+std::string encode(const RunOutcome& o) {
+    ByteWriter w;
+    const BlockTrace& t = o.trace;
+    putAll(w, t.passages);
+    w.put(t.depositCell);
+    putAll(w, t.impactCells);
+    w.put(t.pathLengthM).put(t.reachM).put(t.reason).put(static_cast<std::uint64_t>(o.volumeClass));
+    putAll(w, o.crossings);
+    const BlockPath& p = o.path;
+    w.put(p.run).put(p.seed).put(p.releaseColumn).put(p.releaseRow).put(p.reason).put(p.pathLengthM).put(p.reachM);
+    putAll(w, p.points);
+    putAll(w, o.impacts);
+    return w.take();
+}
+
+RunOutcome decode(const std::string& bytes) {
+    ByteReader r(bytes);
+    RunOutcome o;
+    BlockTrace& t = o.trace;
+    t.passages = getAll<CellPassage>(r);
+    t.depositCell = r.get<long>();
+    t.impactCells = getAll<std::uint32_t>(r);
+    t.pathLengthM = r.get<double>();
+    t.reachM = r.get<double>();
+    t.reason = r.get<dem::StopReason>();
+    o.volumeClass = static_cast<std::size_t>(r.get<std::uint64_t>());
+    o.crossings = getAll<LineCrossing>(r);
+    BlockPath& p = o.path;
+    p.run = r.get<long>();
+    p.seed = r.get<std::uint64_t>();
+    p.releaseColumn = r.get<int>();
+    p.releaseRow = r.get<int>();
+    p.reason = r.get<dem::StopReason>();
+    p.pathLengthM = r.get<double>();
+    p.reachM = r.get<double>();
+    p.points = getAll<PathPoint>(r);
+    o.impacts = getAll<ImpactPoint>(r);
+    r.end();
+    return o;
+}
 
 HazardPass runPass(const std::string& name, const BlockClasses& blocks, const Dtm& dtm, const std::vector<ReleaseCell>& cells,
                    const HazardOptions& o, HazardMap& map, const PassOutputs& outputs) {
@@ -96,12 +200,27 @@ HazardPass runPass(const std::string& name, const BlockClasses& blocks, const Dt
     std::unordered_map<long, Eigen::Vector2d> treeAt;
     for (const auto& t : scene.forest().trees) treeAt[t.id] = {t.x, t.y};
     const long total = static_cast<long>(cells.size()) * o.runsPerCell;
-    std::vector<BlockTrace> traces(static_cast<std::size_t>(total));
-    std::vector<char> failed(traces.size(), 0);
-    std::vector<std::size_t> volumeClass(traces.size(), 0);
-    std::vector<std::vector<LineCrossing>> crossings(outputs.checkLines ? traces.size() : 0);
-    std::vector<BlockPath> paths(outputs.paths ? traces.size() : 0);
-    std::vector<std::vector<ImpactPoint>> impacts(paths.size());
+    std::vector<RunOutcome> runs(static_cast<std::size_t>(total));
+    // Runs a resumed map finished before: read back, not run again.
+    std::vector<long> toRun;
+    {
+        std::map<long, HazardStore::Finished> done;
+        if (outputs.store) done = outputs.store->finished(name);
+        for (long i = 0; i < total; ++i) {
+            const auto it = done.find(i);
+            if (it == done.end()) {
+                toRun.push_back(i);
+                continue;
+            }
+            try {
+                runs[i] = it->second.failed ? RunOutcome{} : decode(it->second.record);
+            } catch (const std::exception& e) {
+                throw InputError(o.outDir + "/hazard.sqlite", 0, name + " run " + std::to_string(i) + " is unreadable (" + e.what() +
+                                                                     "): the store is damaged; start the map again in another --out");
+            }
+            runs[i].failed = it->second.failed;
+        }
+    }
     std::atomic<long> next{0};
     std::mutex progress;
     int done = 0, notes = 0;
@@ -111,12 +230,16 @@ HazardPass runPass(const std::string& name, const BlockClasses& blocks, const Dt
         if (!o.onNote || ++notes > kMostNotes) return;
         o.onNote(text + (notes == kMostNotes ? " (further runs left out are counted in summary.json, not named)" : ""));
     };
-    runOnThreads(threadsFor(o.threads, total), [&] {
-        for (long i; (i = next++) < total;) {
+    const long todo = static_cast<long>(toRun.size());
+    runOnThreads(threadsFor(o.threads, todo), [&] {
+        for (long k; (k = next++) < todo;) {
+            const long i = toRun[static_cast<std::size_t>(k)];
+            RunOutcome& out = runs[static_cast<std::size_t>(i)];
             const std::uint64_t seed = dem::runSeed(o.seed, static_cast<int>(i));
             // The release point: uniform in the cell, from the run's own stream (as the block's orientation).
             SeededRandom rng(dem::splitmix64(seed));
-            const Eigen::Vector2d centre = dtm.grid.centre(cells[i / o.runsPerCell].column, cells[i / o.runsPerCell].row);
+            const ReleaseCell& from = cells[static_cast<std::size_t>(i / o.runsPerCell)];
+            const Eigen::Vector2d centre = dtm.grid.centre(from.column, from.row);
             dem::RunOptions run;
             run.recordTrajectory = true;
             // The terrain spans the DTM's cell centres: a point drawn in an edge cell's outer half is
@@ -124,64 +247,66 @@ HazardPass runPass(const std::string& name, const BlockClasses& blocks, const Dt
             run.releaseAt = Eigen::Vector2d(std::clamp(centre.x() + rng.uniform(-0.5, 0.5) * cell, soil.xmin(), soil.xmax()),
                                             std::clamp(centre.y() + rng.uniform(-0.5, 0.5) * cell, soil.ymin(), soil.ymax()));
             // Drawn only with several classes: without them the runs are those of a single-volume map.
-            if (blocks.scenes.size() > 1) volumeClass[i] = blocks.of(rng.uniform(0, 1));
-            const dem::Scene& classScene = *blocks.scenes[volumeClass[i]];
+            if (blocks.scenes.size() > 1) out.volumeClass = blocks.of(rng.uniform(0, 1));
+            const dem::Scene& classScene = *blocks.scenes[out.volumeClass];
             const std::string which = name + " run " + std::to_string(i) + " (seed " + std::to_string(seed) + ", release cell column " +
-                                      std::to_string(cells[i / o.runsPerCell].column + 1) + ", row " +
-                                      std::to_string(cells[i / o.runsPerCell].row + 1) + ")";
+                                      std::to_string(from.column + 1) + ", row " + std::to_string(from.row + 1) + ")";
             try {
                 const dem::RunResult r = o.model == dem::Model::Dem ? dem::simulateBlock(classScene, static_cast<int>(i), seed, run)
                                                                      : dem::simulateLumped(classScene, static_cast<int>(i), seed, run);
-                traces[i] = traceRun(r, dtm, treeAt);
-                if (outputs.checkLines) crossings[i] = crossCheckLines(r.trajectory, dtm, *outputs.lines);
+                out.trace = traceRun(r, dtm, treeAt);
+                if (outputs.checkLines) out.crossings = crossCheckLines(r.trajectory, dtm, *outputs.lines);
                 if (outputs.paths) {
-                    BlockPath& p = paths[i];
+                    BlockPath& p = out.path;
                     p.run = i;
                     p.seed = seed;
-                    p.releaseColumn = cells[i / o.runsPerCell].column;
-                    p.releaseRow = cells[i / o.runsPerCell].row;
+                    p.releaseColumn = from.column;
+                    p.releaseRow = from.row;
                     p.reason = r.reason;
                     p.pathLengthM = r.runoutAlongSlope;
                     p.reachM = r.runoutHorizontal;
                     p.points = thinPath(r.trajectory, kPathSpacingM, kPathGapS);
-                    impacts[i] = impactPoints(i, r.impacts, classScene.forest(), dtm);
+                    out.impacts = impactPoints(i, r.impacts, classScene.forest(), dtm);
                 }
             } catch (const dem::SimulationError& e) {
-                failed[i] = 1;
+                out.failed = true;
                 std::lock_guard<std::mutex> lock(progress);
                 note(which + " stopped on a numerical error and is left out: " + e.what());
             } catch (const InputError& e) {
                 // A block that cannot start where it was drawn (inside a stem, or the ground under a
                 // steep cell): that run is left out, not the map.
-                failed[i] = 1;
+                out.failed = true;
                 std::lock_guard<std::mutex> lock(progress);
                 note(which + " could not start and is left out: " + e.what());
             }
+            if (outputs.store) outputs.store->save(name, i, out.failed, out.failed ? std::string() : encode(out));
             std::lock_guard<std::mutex> lock(progress);
             ++done;
-            if (o.onRunDone) o.onRunDone(name, done, static_cast<int>(total));
+            if (o.onRunDone) o.onRunDone(name, done, static_cast<int>(todo));
         }
     });
+    if (outputs.store) outputs.store->flush();
     HazardPass pass;
     pass.name = name;
     if (blocks.scenes.size() > 1) pass.blocksPerVolume.assign(blocks.scenes.size(), 0);
     std::vector<double> path, reach;
     std::vector<BlockPath> keptPaths;
     std::vector<ImpactPoint> keptImpacts;
-    for (std::size_t i = 0; i < traces.size(); ++i) {
-        if (failed[i]) {
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        RunOutcome& r = runs[i];
+        if (r.failed) {
             ++pass.failed;
             continue;
         }
-        const BlockTrace& t = traces[i];
+        const BlockTrace& t = r.trace;
         map.add(t);
-        if (outputs.checkLines) outputs.checkLines->add(name, static_cast<long>(i), crossings[i]);
+        if (outputs.checkLines) outputs.checkLines->add(name, static_cast<long>(i), r.crossings);
         if (outputs.paths) {
-            keptPaths.push_back(std::move(paths[i]));
-            keptImpacts.insert(keptImpacts.end(), impacts[i].begin(), impacts[i].end());
+            keptPaths.push_back(std::move(r.path));
+            keptImpacts.insert(keptImpacts.end(), r.impacts.begin(), r.impacts.end());
         }
         ++pass.blocks;
-        if (!pass.blocksPerVolume.empty()) ++pass.blocksPerVolume[volumeClass[i]];
+        if (!pass.blocksPerVolume.empty()) ++pass.blocksPerVolume[r.volumeClass];
         pass.rest += t.reason == dem::StopReason::Rest;
         pass.leftDomain += t.reason == dem::StopReason::LeftDomain;
         pass.timeLimit += t.reason == dem::StopReason::TimeLimit;
@@ -311,7 +436,10 @@ HazardResults runHazard(const HazardOptions& o) {
         results.stands = std::move(stands.polygons);
     }
     if (o.compareBare && forest.trees.empty()) throw InputError("--compare-bare compares with a forest: give --trees or --stands");
-    prepareOutDir(o.outDir);
+    prepareOutDir(o.outDir, o.resume);
+    const std::string storePath = o.outDir + "/hazard.sqlite";
+    const std::unique_ptr<HazardStore> store =
+        o.resume ? HazardStore::resume(storePath, inputsOf(o, forest)) : HazardStore::create(storePath, inputsOf(o, forest));
     if (!o.standsPath.empty()) stand::writeForestCsv(o.outDir + "/forest.csv", forest);
 
     results.releaseCells = static_cast<long>(cells.size());
@@ -326,6 +454,7 @@ HazardResults runHazard(const HazardOptions& o) {
     outputs.lines = &lines;
     outputs.checkLines = tally ? &*tally : nullptr;
     outputs.paths = o.writeTrajectories || o.writeVtk;
+    outputs.store = store.get();
     if (o.writeVtk) writeVtkScene(o.outDir + "/vtk", dtm, scene.forest());
     HazardMap map(dtm.grid);
     results.passes.push_back(runPass(forested ? "forest" : "bare", BlockClasses(scene, o.blockVolumes), dtm, cells, o, map, outputs));

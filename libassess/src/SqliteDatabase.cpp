@@ -64,6 +64,12 @@ SqliteStatement& SqliteStatement::bind(int index, const std::string& text) {
     return *this;
 }
 
+SqliteStatement& SqliteStatement::bindBlob(int index, const std::string& bytes) {
+    if (sqlite3_bind_blob(statement_, index, bytes.data(), static_cast<int>(bytes.size()), SQLITE_TRANSIENT) != SQLITE_OK)
+        db_->fail("campaign store");
+    return *this;
+}
+
 SqliteStatement& SqliteStatement::bindNull(int index) {
     if (sqlite3_bind_null(statement_, index) != SQLITE_OK) db_->fail("campaign store");
     return *this;
@@ -93,6 +99,11 @@ std::int64_t SqliteStatement::integer(int column) const { return sqlite3_column_
 std::string SqliteStatement::text(int column) const {
     const auto* t = reinterpret_cast<const char*>(sqlite3_column_text(statement_, column));
     return t ? std::string(t, static_cast<std::size_t>(sqlite3_column_bytes(statement_, column))) : std::string();
+}
+
+std::string SqliteStatement::blob(int column) const {
+    const auto* b = static_cast<const char*>(sqlite3_column_blob(statement_, column));
+    return b ? std::string(b, static_cast<std::size_t>(sqlite3_column_bytes(statement_, column))) : std::string();
 }
 
 SqliteTransaction::SqliteTransaction(SqliteDatabase& db) : db_(db) { db_.execute("BEGIN IMMEDIATE"); }

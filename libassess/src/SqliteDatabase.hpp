@@ -43,6 +43,7 @@ public:
     SqliteStatement& bind(int index, std::int64_t value);
     SqliteStatement& bind(int index, const std::string& text);
     SqliteStatement& bindNull(int index);
+    SqliteStatement& bindBlob(int index, const std::string& bytes);
     // Runs to the next row: true while there is one. Resets itself (keeping the binds) when done.
     bool step();
     void run();  // a statement without results
@@ -50,6 +51,7 @@ public:
     double real(int column) const;  // NULL reads back as NaN
     std::int64_t integer(int column) const;
     std::string text(int column) const;
+    std::string blob(int column) const;
 
 private:
     bool isNull(int column) const;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <ogrsf_frmts.h>
+#include <sqlite3.h>
 
 #include <cmath>
 #include <filesystem>
@@ -388,6 +389,58 @@ TEST_F(Hazard, CheckLinesTrajectoriesAndVtkFollowTheBlocks) {
     EXPECT_EQ(gpkg->GetLayerByName("paths_bare")->GetFeatureCount(), 200);
     EXPECT_EQ(gpkg->GetLayerByName("impacts_forest")->GetFeatureCount(), one.passes.at(0).treeImpacts);
     EXPECT_EQ(gpkg->GetLayerByName("impacts_bare")->GetFeatureCount(), 0);
+}
+
+// An interrupted map (here: runs cut out of its store, as a kill between two batches leaves it)
+// resumes with only the runs it lacks and ends with every output of the uninterrupted map.
+TEST_F(Hazard, ResumedMapRunsWhatItLacksAndEqualsTheWholeMap) {
+    std::string trees = "x,y,dbh_cm\n";
+    for (int i = 0; i < 400; ++i) trees += std::to_string(60 + 7 * (i % 20) + (i / 20 % 2) * 3.5) + "," + std::to_string(5 + 4.5 * (i / 20)) + ",25\n";
+    HazardOptions o;
+    o.dtmPath = dtm("slope.asc", 60, 20, 5.0, 0, 0, [](int c, int) { return 300.0 - 5 * c * std::tan(0.6 - 0.004 * c); });
+    o.releasePath = polygon("release.geojson", 10, 40, 20, 60);
+    o.treesPath = write("trees.csv", trees);
+    o.checkLinesPath = write("lines.geojson", R"({"type": "FeatureCollection", "features": [
+        {"type": "Feature", "properties": {"name": "far"}, "geometry": {"type": "LineString", "coordinates": [[150, 0], [150, 100]]}}]})");
+    o.model = sylva::dem::Model::Lumped;
+    o.runsPerCell = 25;
+    o.seed = 4;
+    o.compareBare = true;
+    o.writeTrajectories = true;
+    o.blockVolumes = parseBlockVolumes("0.5:2,2:1");
+    o.outDir = (dir_ / "whole").string();
+    runHazard(o);
+    o.outDir = (dir_ / "cut").string();
+    runHazard(o);
+    {
+        sqlite3* db = nullptr;
+        ASSERT_EQ(sqlite3_open((dir_ / "cut/hazard.sqlite").c_str(), &db), SQLITE_OK);
+        ASSERT_EQ(sqlite3_exec(db, "DELETE FROM runs WHERE run % 3 = 0 OR (pass = 'bare' AND run > 150)", nullptr, nullptr, nullptr), SQLITE_OK);
+        sqlite3_close(db);
+    }
+    long reRun = 0;
+    o.onRunDone = [&](const std::string&, int, int) { ++reRun; };
+    o.resume = true;
+    runHazard(o);
+    EXPECT_EQ(reRun, 67 + 67 + 49 - 16);  // runs 0, 3, ..., 198 of each pass, and bare runs 151-199 but the 16 multiples of 3 among them
+    const auto read = [](const fs::path& p) {
+        std::ifstream in(p, std::ios::binary);
+        return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    };
+    for (const char* f : {"summary.json", "check_lines.csv", "check_lines_summary.csv", "reach_probability.tif", "energy_p95_kj.tif",
+                          "deposits.tif", "bare/reach_probability.tif", "protection.tif"})
+        EXPECT_EQ(read(dir_ / "whole" / f), read(dir_ / "cut" / f)) << f;
+    GDALDatasetUniquePtr gpkg(GDALDataset::Open((dir_ / "cut/trajectories.gpkg").c_str(), GDAL_OF_VECTOR));
+    ASSERT_TRUE(gpkg);
+    EXPECT_EQ(gpkg->GetLayerByName("paths_forest")->GetFeatureCount(), 200);
+
+    // Another input is refused, naming it; so is a folder without a store.
+    o.seed = 5;
+    EXPECT_NE(errorOf([&] { runHazard(o); }).find("started with 'seed 4', this command gives 'seed 5'"), std::string::npos);
+    o.seed = 4;
+    o.outDir = (dir_ / "nothing").string();
+    fs::create_directories(o.outDir);
+    EXPECT_NE(errorOf([&] { runHazard(o); }).find("holds no map to resume"), std::string::npos);
 }
 
 TEST_F(Hazard, BlockVolumesAreAListOfVolumesWithOptionalWeights) {

@@ -39,6 +39,7 @@ struct HazardOptions {
     bool writeTrajectories = false; // trajectories.gpkg: each block's path and its tree impacts (BlockPaths.hpp)
     bool writeVtk = false;          // vtk/: the terrain, the stems and the paths for ParaView
     std::string outDir;
+    bool resume = false;  // finish the interrupted map in outDir (its hazard.sqlite): the runs it lacks, then every output
     std::function<void(const std::string&)> onNote;
     std::function<void(const std::string& pass, int done, int total)> onRunDone;
 };
@@ -61,8 +62,9 @@ struct HazardResults {
     std::string figureWarning;         // why map.svg is missing (no gnuplot), empty if drawn
 };
 
-// Writes the rasters, map.svg (HazardFigure.hpp) and summary.json into outDir (which must be new or empty). InputError for
-// unusable inputs, before any run.
+// Writes the rasters, map.svg (HazardFigure.hpp) and summary.json into outDir (which must be new or empty,
+// or with `resume` the interrupted map's), keeping every finished run in outDir/hazard.sqlite. InputError
+// for unusable inputs (and a resume with other inputs), before any run.
 HazardResults runHazard(const HazardOptions& options);
 
 }  // namespace sylva::assess

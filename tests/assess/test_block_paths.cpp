@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "GeoTestFolder.hpp"
 #include "libassess/BlockPaths.hpp"
 #include "libassess/GeoRaster.hpp"
 #include "libcommon/InputError.hpp"
@@ -23,22 +24,12 @@ namespace stand = sylva::stand;
 
 namespace {
 
-// Lambert-93 (EPSG:2154): a projected CRS a French DTM comes in.
-const char* const kLambert93Prj =
-    R"(PROJCS["RGF93 v1 / Lambert-93",GEOGCS["RGF93 v1",DATUM["Reseau_Geodesique_Francais_1993_v1",SPHEROID["GRS 1980",6378137,298.257222101]],PRIMEM["Greenwich",0],UNIT["degree",0.0174532925199433]],PROJECTION["Lambert_Conformal_Conic_2SP"],PARAMETER["latitude_of_origin",46.5],PARAMETER["central_meridian",3],PARAMETER["standard_parallel_1",49],PARAMETER["standard_parallel_2",44],PARAMETER["false_easting",700000],PARAMETER["false_northing",6600000],UNIT["metre",1]])";
-
 // The plane the test DTM samples at its cell centres: bilinear interpolation gives it back exactly.
 constexpr double kX0 = 700000, kY0 = 6600000;
 double plane(double x, double y) { return 200 - 0.5 * (x - kX0) + 0.25 * (y - kY0); }
 
-class BlockPaths : public ::testing::Test {
+class BlockPaths : public GeoTestFolder {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("sylvarock-paths-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
     // A 4 x 3 ESRI ASCII DTM of 10 m cells, south-west corner (kX0, kY0), in Lambert-93, on `plane`.
     Dtm planarDtm() const {
         std::string text = "ncols 4\nnrows 3\nxllcorner " + std::to_string(kX0) + "\nyllcorner " + std::to_string(kY0) +
@@ -51,16 +42,6 @@ protected:
         std::ofstream(dir_ / "dtm.prj") << kLambert93Prj;
         return readDtm((dir_ / "dtm.asc").string());
     }
-    template <class F>
-    std::string errorOf(F f) const {
-        try {
-            f();
-        } catch (const sylva::InputError& e) {
-            return e.what();
-        }
-        return "(no error)";
-    }
-    fs::path dir_;
 };
 
 dem::TrajectorySample sample(double t, double x, double y, double z, double speed = 0, double energyJ = 0) {

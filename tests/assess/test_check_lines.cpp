@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "GeoTestFolder.hpp"
 #include "libassess/CheckLines.hpp"
 #include "libcommon/InputError.hpp"
 
@@ -17,29 +18,8 @@ using sylva::dem::TrajectorySample;
 
 namespace {
 
-// Lambert-93 (EPSG:2154): a projected CRS a French DTM comes in.
-const char* const kLambert93Prj =
-    R"(PROJCS["RGF93 v1 / Lambert-93",GEOGCS["RGF93 v1",DATUM["Reseau_Geodesique_Francais_1993_v1",SPHEROID["GRS 1980",6378137,298.257222101]],PRIMEM["Greenwich",0],UNIT["degree",0.0174532925199433]],PROJECTION["Lambert_Conformal_Conic_2SP"],PARAMETER["latitude_of_origin",46.5],PARAMETER["central_meridian",3],PARAMETER["standard_parallel_1",49],PARAMETER["standard_parallel_2",44],PARAMETER["false_easting",700000],PARAMETER["false_northing",6600000],UNIT["metre",1]])";
-
-class CheckLines : public ::testing::Test {
+class CheckLines : public GeoTestFolder {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("sylvarock-check-lines-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    std::string write(const std::string& name, const std::string& text) const {
-        std::ofstream(dir_ / name) << text;
-        return (dir_ / name).string();
-    }
-    std::string read(const std::string& name) const {
-        std::ifstream in(dir_ / name);
-        std::stringstream s;
-        s << in.rdbuf();
-        return s.str();
-    }
     // An ESRI ASCII DTM of 4 x 4 cells of 5 m, south-west corner at the origin: the plane
     // z = 100 - 0.5 x - 0.25 y at the cell centres, which the bilinear surface then is everywhere
     // between them.
@@ -66,16 +46,6 @@ protected:
         return R"({"type": "Feature", "properties": )" + properties + R"(, "geometry": {"type": ")" + type +
                R"(", "coordinates": )" + coordinates + "}}";
     }
-    template <class F>
-    std::string errorOf(F f) const {
-        try {
-            f();
-        } catch (const sylva::InputError& e) {
-            return e.what();
-        }
-        return "(no error)";
-    }
-    fs::path dir_;
 };
 
 TrajectorySample sample(double t, Eigen::Vector3d position, Eigen::Vector3d velocity = Eigen::Vector3d::Zero(), double translationalJ = 0,

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <string>
 
+#include "GeoTestFolder.hpp"
 #include "libassess/GeoRaster.hpp"
 #include "libassess/HazardMap.hpp"
 #include "libassess/HazardRun.hpp"
@@ -30,22 +31,8 @@ namespace stand = sylva::stand;
 
 namespace {
 
-// Lambert-93 (EPSG:2154): a projected CRS a French DTM comes in.
-const char* const kLambert93Prj =
-    R"(PROJCS["RGF93 v1 / Lambert-93",GEOGCS["RGF93 v1",DATUM["Reseau_Geodesique_Francais_1993_v1",SPHEROID["GRS 1980",6378137,298.257222101]],PRIMEM["Greenwich",0],UNIT["degree",0.0174532925199433]],PROJECTION["Lambert_Conformal_Conic_2SP"],PARAMETER["latitude_of_origin",46.5],PARAMETER["central_meridian",3],PARAMETER["standard_parallel_1",49],PARAMETER["standard_parallel_2",44],PARAMETER["false_easting",700000],PARAMETER["false_northing",6600000],UNIT["metre",1]])";
-
-class Hazard : public ::testing::Test {
+class Hazard : public GeoTestFolder {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("sylvarock-hazard-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    std::string write(const std::string& name, const std::string& text) const {
-        std::ofstream(dir_ / name) << text;
-        return (dir_ / name).string();
-    }
     // An ESRI ASCII DTM: `cols` x `rows` cells of `cell` m, south-west corner (x0, y0), height z(col, row)
     // with row 0 the northernmost (as the file is written).
     template <class Z>
@@ -65,16 +52,23 @@ protected:
                            "\"geometry\": {\"type\": \"Polygon\", \"coordinates\": [[" + p(x0, y0) + ", " + p(x1, y0) + ", " + p(x1, y1) +
                            ", " + p(x0, y1) + ", " + p(x0, y0) + "]]}}]}");
     }
-    template <class F>
-    std::string errorOf(F f) const {
-        try {
-            f();
-        } catch (const sylva::InputError& e) {
-            return e.what();
-        }
-        return "(no error)";
+    // The small slope of the end-to-end tests: 60 x 20 cells of 5 m easing from ~34 to ~20 degrees, a
+    // release of 8 cells near the top, 400 stems of 25 cm in a staggered grid 60-200 m down, the lumped
+    // model (fast), 25 blocks a cell, with and without the trees.
+    HazardOptions smallSlope() const {
+        std::string trees = "x,y,dbh_cm\n";
+        for (int i = 0; i < 400; ++i)
+            trees += std::to_string(60 + 7 * (i % 20) + (i / 20 % 2) * 3.5) + "," + std::to_string(5 + 4.5 * (i / 20)) + ",25\n";
+        HazardOptions o;
+        o.dtmPath = dtm("slope.asc", 60, 20, 5.0, 0, 0, [](int c, int) { return 300.0 - 5 * c * std::tan(0.6 - 0.004 * c); });
+        o.releasePath = polygon("release.geojson", 10, 40, 20, 60);
+        o.treesPath = write("trees.csv", trees);
+        o.model = sylva::dem::Model::Lumped;
+        o.runsPerCell = 25;
+        o.seed = 4;
+        o.compareBare = true;
+        return o;
     }
-    fs::path dir_;
 };
 
 TEST_F(Hazard, DtmKeepsItsGridAndItsHeightsNorthUp) {
@@ -248,18 +242,8 @@ TEST_F(Hazard, TraceWalksThePathBetweenSamples) {
 // [0, 1], every block counted in its release cell, deposits adding up to the blocks at rest, a
 // forest that shortens the reach, and the same rasters on 1 and 2 threads.
 TEST_F(Hazard, SmallSlopeEndToEnd) {
-    const std::string slope = dtm("slope.asc", 60, 20, 5.0, 0, 0, [](int c, int) { return 300.0 - 5 * c * std::tan(0.6 - 0.004 * c); });
-    const std::string release = polygon("release.geojson", 10, 40, 20, 60);
-    std::string trees = "x,y,dbh_cm\n";
-    for (int i = 0; i < 400; ++i) trees += std::to_string(60 + 7 * (i % 20) + (i / 20 % 2) * 3.5) + "," + std::to_string(5 + 4.5 * (i / 20)) + ",25\n";
-    HazardOptions o;
-    o.dtmPath = slope;
-    o.releasePath = release;
-    o.treesPath = write("trees.csv", trees);
-    o.model = sylva::dem::Model::Lumped;
-    o.runsPerCell = 25;
-    o.seed = 4;
-    o.compareBare = true;
+    HazardOptions o = smallSlope();
+    const std::string slope = o.dtmPath;
     o.threads = 1;
     o.outDir = (dir_ / "one").string();
     const HazardResults one = runHazard(o);
@@ -331,20 +315,10 @@ TEST_F(Hazard, SmallSlopeEndToEnd) {
 // block's path and tree impacts in the GeoPackage (as many paths as blocks, as many impacts as the
 // summary counts), the VTK files; all of it the same on 1 and 2 threads.
 TEST_F(Hazard, CheckLinesTrajectoriesAndVtkFollowTheBlocks) {
-    const std::string slope = dtm("slope.asc", 60, 20, 5.0, 0, 0, [](int c, int) { return 300.0 - 5 * c * std::tan(0.6 - 0.004 * c); });
-    std::string trees = "x,y,dbh_cm\n";
-    for (int i = 0; i < 400; ++i) trees += std::to_string(60 + 7 * (i % 20) + (i / 20 % 2) * 3.5) + "," + std::to_string(5 + 4.5 * (i / 20)) + ",25\n";
     const std::string lines = write("lines.geojson", R"({"type": "FeatureCollection", "features": [
         {"type": "Feature", "properties": {"name": "near"}, "geometry": {"type": "LineString", "coordinates": [[25, 0], [25, 100]]}},
         {"type": "Feature", "properties": {"name": "far"}, "geometry": {"type": "LineString", "coordinates": [[150, 0], [150, 100]]}}]})");
-    HazardOptions o;
-    o.dtmPath = slope;
-    o.releasePath = polygon("release.geojson", 10, 40, 20, 60);
-    o.treesPath = write("trees.csv", trees);
-    o.model = sylva::dem::Model::Lumped;
-    o.runsPerCell = 25;
-    o.seed = 4;
-    o.compareBare = true;
+    HazardOptions o = smallSlope();
     o.checkLinesPath = lines;
     o.writeTrajectories = true;
     o.writeVtk = true;
@@ -394,18 +368,9 @@ TEST_F(Hazard, CheckLinesTrajectoriesAndVtkFollowTheBlocks) {
 // An interrupted map (here: runs cut out of its store, as a kill between two batches leaves it)
 // resumes with only the runs it lacks and ends with every output of the uninterrupted map.
 TEST_F(Hazard, ResumedMapRunsWhatItLacksAndEqualsTheWholeMap) {
-    std::string trees = "x,y,dbh_cm\n";
-    for (int i = 0; i < 400; ++i) trees += std::to_string(60 + 7 * (i % 20) + (i / 20 % 2) * 3.5) + "," + std::to_string(5 + 4.5 * (i / 20)) + ",25\n";
-    HazardOptions o;
-    o.dtmPath = dtm("slope.asc", 60, 20, 5.0, 0, 0, [](int c, int) { return 300.0 - 5 * c * std::tan(0.6 - 0.004 * c); });
-    o.releasePath = polygon("release.geojson", 10, 40, 20, 60);
-    o.treesPath = write("trees.csv", trees);
+    HazardOptions o = smallSlope();
     o.checkLinesPath = write("lines.geojson", R"({"type": "FeatureCollection", "features": [
         {"type": "Feature", "properties": {"name": "far"}, "geometry": {"type": "LineString", "coordinates": [[150, 0], [150, 100]]}}]})");
-    o.model = sylva::dem::Model::Lumped;
-    o.runsPerCell = 25;
-    o.seed = 4;
-    o.compareBare = true;
     o.writeTrajectories = true;
     o.blockVolumes = parseBlockVolumes("0.5:2,2:1");
     o.outDir = (dir_ / "whole").string();
@@ -462,10 +427,9 @@ TEST_F(Hazard, BlockVolumesAreAListOfVolumesWithOptionalWeights) {
 // (400 blocks at 3:1, a binomial share of 0.75 with a standard deviation of 0.022: +-0.08 is 3.7 sd),
 // and the blocks of each class are counted in the summary.
 TEST_F(Hazard, BlocksDrawTheirVolumeFromTheDistribution) {
-    HazardOptions o;
-    o.dtmPath = dtm("slope.asc", 60, 20, 5.0, 0, 0, [](int c, int) { return 300.0 - 5 * c * std::tan(0.6 - 0.004 * c); });
-    o.releasePath = polygon("release.geojson", 10, 40, 20, 60);
-    o.model = sylva::dem::Model::Lumped;
+    HazardOptions o = smallSlope();
+    o.treesPath.clear();
+    o.compareBare = false;
     o.runsPerCell = 50;
     o.blockVolumes = parseBlockVolumes("0.2:3,4:1");
     o.outDir = (dir_ / "out").string();

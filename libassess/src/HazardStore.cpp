@@ -1,5 +1,6 @@
 #include "HazardStore.hpp"
 
+#include <chrono>
 #include <filesystem>
 
 #include "libcommon/InputError.hpp"
@@ -7,8 +8,10 @@
 namespace sylva::assess {
 
 namespace {
-// Runs written per transaction: a commit costs a disk sync, a lost batch costs these runs again.
+// A transaction per 64 runs or per 5 s, whichever comes first: a commit costs a disk sync, a kill
+// loses at most the runs since the last one (seconds of DEM runs, not minutes).
 constexpr std::size_t kBatch = 64;
+constexpr auto kBatchTime = std::chrono::seconds(5);
 }  // namespace
 
 HazardStore::HazardStore(const std::string& path, bool create) : db_(path, create) {}
@@ -51,7 +54,7 @@ std::map<long, HazardStore::Finished> HazardStore::finished(const std::string& p
 void HazardStore::save(const std::string& pass, long run, bool failed, std::string record) {
     std::lock_guard<std::mutex> lock(mutex_);
     pending_.push_back({pass, run, failed, std::move(record)});
-    if (pending_.size() >= kBatch) writeBatch();
+    if (pending_.size() >= kBatch || std::chrono::steady_clock::now() - lastWrite_ >= kBatchTime) writeBatch();
 }
 
 void HazardStore::flush() {
@@ -67,6 +70,7 @@ void HazardStore::writeBatch() {
         insert.bind(1, p.pass).bind(2, static_cast<std::int64_t>(p.run)).bind(3, static_cast<std::int64_t>(p.failed)).bindBlob(4, p.record).run();
     t.commit();
     pending_.clear();
+    lastWrite_ = std::chrono::steady_clock::now();
 }
 
 }  // namespace sylva::assess

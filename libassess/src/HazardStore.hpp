@@ -3,6 +3,7 @@
 // map (a killed process, a full disk, a cluster's time limit) resumes where it stopped with --resume
 // and gives the maps it would have given uninterrupted. The inputs' fingerprint is stored with it: a
 // resume with other inputs is refused, naming what changed.
+#include <chrono>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -25,7 +26,7 @@ public:
         std::string record;  // the run's results, as HazardRun encodes them (empty for a failed run)
     };
     std::map<long, Finished> finished(const std::string& pass);
-    // Thread-safe; written in batches (a transaction per batch), the rest by flush().
+    // Thread-safe; written in batches (a transaction per 64 runs or 5 s), the rest by flush().
     void save(const std::string& pass, long run, bool failed, std::string record);
     void flush();
 
@@ -41,6 +42,7 @@ private:
         std::string record;
     };
     std::vector<Pending> pending_;
+    std::chrono::steady_clock::time_point lastWrite_ = std::chrono::steady_clock::now();
 };
 
 }  // namespace sylva::assess

@@ -167,6 +167,7 @@ ElevationGrid ElevationGrid::readAsc(const std::string& path) {
     std::reverse(g.rowLine_.begin(), g.rowLine_.end());
     g.z_.reserve(static_cast<std::size_t>(g.ncols_) * g.nrows_);
     for (const auto& row : fileRows) g.z_.insert(g.z_.end(), row.begin(), row.end());
+    g.complete_ = g.noDataCells() == 0;
     return g;
 }
 
@@ -184,6 +185,7 @@ ElevationGrid::CellRange ElevationGrid::cellsUnder(double x0, double x1, double 
 void ElevationGrid::requireDefined(double x0, double x1, double y0, double y1) const {
     if (!std::isfinite(x0) || !std::isfinite(x1) || !std::isfinite(y0) || !std::isfinite(y1))
         throw std::invalid_argument("ElevationGrid::requireDefined: the rectangle is not finite");
+    if (complete_) return;
     const CellRange r = cellsUnder(x0, x1, y0, y1);
     // north first, so that the first error reported is the first in the file
     for (int row = r.r1; row >= r.r0; --row)
@@ -204,6 +206,7 @@ ElevationGrid ElevationGrid::fromValues(int columns, int rows, double x0, double
     g.cell_ = cellSize;
     g.z_ = std::move(z);
     g.source_ = std::move(source);
+    g.complete_ = g.noDataCells() == 0;
     return g;
 }
 

@@ -57,6 +57,7 @@ private:
     int ncols_ = 0, nrows_ = 0;
     double x0_ = 0, y0_ = 0, cell_ = 1;  // centre of the south-west cell
     std::vector<double> z_;              // row-major, row 0 = south; NODATA stored as NaN
+    bool complete_ = false;              // no NODATA cell: heights need no check (a hazard DTM is queried millions of times)
     std::string source_;                 // file name, for errors raised after reading
     std::vector<long> rowLine_;          // line of each row in the file (row 0 = south); empty: not read from text
 };

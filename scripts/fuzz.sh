@@ -24,6 +24,7 @@ declare -A seeds=(
   [fuzz_dtm]="tests/data/dem"
   [fuzz_run_record]="tests/fuzz/corpus/run_record"
   [fuzz_campaign_store]="tests/fuzz/corpus/store"
+  [fuzz_soil_types]="tests/fuzz/corpus/soil_types"
 )
 targets=("$@")
 [ ${#targets[@]} -eq 0 ] && targets=("${!seeds[@]}")

@@ -4,17 +4,15 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <mutex>
 #include <optional>
-#include <sstream>
 #include <unordered_map>
 
-#include "Bytes.hpp"
 #include "HazardStore.hpp"
+#include "RunOutcome.hpp"
 #include "libassess/BlockPaths.hpp"
 #include "libassess/CheckLines.hpp"
 #include "libassess/GeoRaster.hpp"
@@ -93,35 +91,6 @@ std::vector<std::string> inputsOf(const HazardOptions& o, const stand::Forest& f
     return lines;
 }
 
-// The scene of each block-volume class (the scene itself without classes) and where each class ends
-// on [0, 1].
-struct BlockClasses {
-    std::vector<dem::Scene> resized;       // a scene per class, sharing the soil bed
-    std::vector<const dem::Scene*> scenes;
-    std::vector<double> upTo;
-    BlockClasses(const dem::Scene& scene, const std::vector<BlockVolumeClass>& classes) {
-        if (classes.empty()) {
-            scenes.push_back(&scene);
-            return;
-        }
-        double total = 0;
-        for (const auto& c : classes) total += c.weight;
-        double sum = 0;
-        for (const auto& c : classes) {
-            resized.push_back(scene.withBlockVolume(c.volumeM3));
-            upTo.push_back((sum += c.weight) / total);
-        }
-        upTo.back() = 1;
-        for (const auto& r : resized) scenes.push_back(&r);
-    }
-    // The class of a uniform draw u in [0, 1).
-    std::size_t of(double u) const {
-        std::size_t k = 0;
-        while (k + 1 < upTo.size() && u >= upTo[k]) ++k;
-        return k;
-    }
-};
-
 // What a pass writes besides the rasters, when asked for, and where it keeps its finished runs.
 struct PassOutputs {
     const std::vector<CheckLine>* lines = nullptr;  // with checkLines
@@ -130,73 +99,9 @@ struct PassOutputs {
     HazardStore* store = nullptr;  // every finished run, for --resume
 };
 
-// All a finished run leaves to its pass.
-struct RunOutcome {
-    bool failed = false;
-    BlockTrace trace;
-    std::size_t volumeClass = 0;
-    std::vector<LineCrossing> crossings;
-    BlockPath path;
-    std::vector<ImpactPoint> impacts;
-};
-
-template <class T>
-void putAll(ByteWriter& w, const std::vector<T>& items) {
-    w.put(static_cast<std::uint64_t>(items.size()));
-    for (const T& item : items) w.put(item);
-}
-template <class T>
-std::vector<T> getAll(ByteReader& r) {
-    std::vector<T> items(r.count(sizeof(T)));
-    for (T& item : items) item = r.get<T>();
-    return items;
-}
-
-// A run as the store keeps it (HazardStore): its bytes in this machine's layout, as the MPI messages.
-std::string encode(const RunOutcome& o) {
-    ByteWriter w;
-    const BlockTrace& t = o.trace;
-    putAll(w, t.passages);
-    w.put(t.depositCell);
-    putAll(w, t.impactCells);
-    w.put(t.pathLengthM).put(t.reachM).put(t.reason).put(static_cast<std::uint64_t>(o.volumeClass));
-    putAll(w, o.crossings);
-    const BlockPath& p = o.path;
-    w.put(p.run).put(p.seed).put(p.releaseColumn).put(p.releaseRow).put(p.reason).put(p.pathLengthM).put(p.reachM);
-    putAll(w, p.points);
-    putAll(w, o.impacts);
-    return w.take();
-}
-
-RunOutcome decode(const std::string& bytes) {
-    ByteReader r(bytes);
-    RunOutcome o;
-    BlockTrace& t = o.trace;
-    t.passages = getAll<CellPassage>(r);
-    t.depositCell = r.get<long>();
-    t.impactCells = getAll<std::uint32_t>(r);
-    t.pathLengthM = r.get<double>();
-    t.reachM = r.get<double>();
-    t.reason = r.get<dem::StopReason>();
-    o.volumeClass = static_cast<std::size_t>(r.get<std::uint64_t>());
-    o.crossings = getAll<LineCrossing>(r);
-    BlockPath& p = o.path;
-    p.run = r.get<long>();
-    p.seed = r.get<std::uint64_t>();
-    p.releaseColumn = r.get<int>();
-    p.releaseRow = r.get<int>();
-    p.reason = r.get<dem::StopReason>();
-    p.pathLengthM = r.get<double>();
-    p.reachM = r.get<double>();
-    p.points = getAll<PathPoint>(r);
-    o.impacts = getAll<ImpactPoint>(r);
-    r.end();
-    return o;
-}
-
-HazardPass runPass(const std::string& name, const BlockClasses& blocks, const Dtm& dtm, const std::vector<ReleaseCell>& cells,
+HazardPass runPass(const std::string& name, const BlockVolumeScenes& blocks, const Dtm& dtm, const std::vector<ReleaseCell>& cells,
                    const HazardOptions& o, HazardMap& map, const PassOutputs& outputs) {
-    const dem::Scene& scene = *blocks.scenes.front();
+    const dem::Scene& scene = blocks.scene(0);
     std::unordered_map<long, Eigen::Vector2d> treeAt;
     for (const auto& t : scene.forest().trees) treeAt[t.id] = {t.x, t.y};
     const long total = static_cast<long>(cells.size()) * o.runsPerCell;
@@ -247,8 +152,8 @@ HazardPass runPass(const std::string& name, const BlockClasses& blocks, const Dt
             run.releaseAt = Eigen::Vector2d(std::clamp(centre.x() + rng.uniform(-0.5, 0.5) * cell, soil.xmin(), soil.xmax()),
                                             std::clamp(centre.y() + rng.uniform(-0.5, 0.5) * cell, soil.ymin(), soil.ymax()));
             // Drawn only with several classes: without them the runs are those of a single-volume map.
-            if (blocks.scenes.size() > 1) out.volumeClass = blocks.of(rng.uniform(0, 1));
-            const dem::Scene& classScene = *blocks.scenes[out.volumeClass];
+            if (blocks.classes() > 1) out.volumeClass = blocks.of(rng.uniform(0, 1));
+            const dem::Scene& classScene = blocks.scene(out.volumeClass);
             const std::string which = name + " run " + std::to_string(i) + " (seed " + std::to_string(seed) + ", release cell column " +
                                       std::to_string(from.column + 1) + ", row " + std::to_string(from.row + 1) + ")";
             try {
@@ -288,7 +193,7 @@ HazardPass runPass(const std::string& name, const BlockClasses& blocks, const Dt
     if (outputs.store) outputs.store->flush();
     HazardPass pass;
     pass.name = name;
-    if (blocks.scenes.size() > 1) pass.blocksPerVolume.assign(blocks.scenes.size(), 0);
+    if (blocks.classes() > 1) pass.blocksPerVolume.assign(blocks.classes(), 0);
     std::vector<double> path, reach;
     std::vector<BlockPath> keptPaths;
     std::vector<ImpactPoint> keptImpacts;
@@ -356,34 +261,6 @@ nlohmann::ordered_json passJson(const HazardPass& p) {
 }
 
 }  // namespace
-
-std::vector<BlockVolumeClass> parseBlockVolumes(const std::string& text) {
-    std::vector<BlockVolumeClass> classes;
-    std::stringstream list(text);
-    for (std::string item; std::getline(list, item, ',');) {
-        BlockVolumeClass c;
-        const auto colon = item.find(':');
-        const auto number = [&](const std::string& s, const char* what) {
-            std::size_t used = 0;
-            double v = std::nan("");
-            try {
-                v = std::stod(s, &used);
-            } catch (const std::exception&) {
-            }
-            if (used != s.size() || !std::isfinite(v))
-                throw InputError("--block-volumes '" + text + "': " + what + " '" + s + "' is not a number (expected V1,V2,... or V1:W1,V2:W2,...)");
-            return v;
-        };
-        c.volumeM3 = number(item.substr(0, colon), "volume");
-        if (colon != std::string::npos) c.weight = number(item.substr(colon + 1), "weight");
-        if (!(c.volumeM3 > 0 && c.volumeM3 <= 1000))
-            throw InputError("--block-volumes '" + text + "': a volume of " + readableNumber(c.volumeM3) + " m3 is not in (0, 1000]");
-        if (!(c.weight > 0)) throw InputError("--block-volumes '" + text + "': a weight of " + readableNumber(c.weight) + " is not positive");
-        classes.push_back(c);
-    }
-    if (classes.empty()) throw InputError("--block-volumes: empty list (expected V1,V2,... or V1:W1,V2:W2,...)");
-    return classes;
-}
 
 HazardResults runHazard(const HazardOptions& o) {
     if (o.runsPerCell < 1) throw InputError("--runs-per-cell must be at least 1, got " + std::to_string(o.runsPerCell));
@@ -457,7 +334,7 @@ HazardResults runHazard(const HazardOptions& o) {
     outputs.store = store.get();
     if (o.writeVtk) writeVtkScene(o.outDir + "/vtk", dtm, scene.forest());
     HazardMap map(dtm.grid);
-    results.passes.push_back(runPass(forested ? "forest" : "bare", BlockClasses(scene, o.blockVolumes), dtm, cells, o, map, outputs));
+    results.passes.push_back(runPass(forested ? "forest" : "bare", BlockVolumeScenes(scene, o.blockVolumes), dtm, cells, o, map, outputs));
     results.rasters = writeRasters(o.outDir, map, dtm, forested);
     const FigureSet figure = drawHazardMap(o.outDir, dtm, map.reachProbability(), scene.forest());
     results.figureWarning = figure.warning;
@@ -465,7 +342,7 @@ HazardResults runHazard(const HazardOptions& o) {
     if (o.compareBare) {
         const dem::Scene bare = onSoils(dem::Scene(config, dtm.elevation));
         HazardMap bareMap(dtm.grid);
-        results.passes.push_back(runPass("bare", BlockClasses(bare, o.blockVolumes), dtm, cells, o, bareMap, outputs));
+        results.passes.push_back(runPass("bare", BlockVolumeScenes(bare, o.blockVolumes), dtm, cells, o, bareMap, outputs));
         for (const auto& name : writeRasters(o.outDir + "/bare", bareMap, dtm, false)) results.rasters.push_back("bare/" + name);
         // What the forest takes off the reach probability: bare minus forest, in [-1, 1].
         protection = bareMap.reachProbability();

@@ -6,20 +6,11 @@
 #include <string>
 #include <vector>
 
+#include "libassess/BlockVolumes.hpp"
 #include "libassess/StandPolygons.hpp"
 #include "libdem/Campaign.hpp"
 
 namespace sylva::assess {
-
-// One class of a block-volume distribution: blocks of this volume (the scene's shape scaled) are
-// released with probability weight / (sum of the weights).
-struct BlockVolumeClass {
-    double volumeM3 = 0;
-    double weight = 1;
-};
-// "0.5,1,2" (equally likely) or "0.5:6,1:3,2:1" (volume:weight). InputError on a volume outside
-// (0, 1000] m3, a weight <= 0, or text that is not such a list.
-std::vector<BlockVolumeClass> parseBlockVolumes(const std::string& text);
 
 struct HazardOptions {
     std::string dtmPath;       // any raster GDAL reads

@@ -20,7 +20,8 @@ int runHazardCommand(int argc, const char* const* argv) {
     std::vector<std::string> sets;
     o.add_options()
         ("dtm", po::value<std::string>(), "the terrain: a raster GDAL reads (GeoTIFF, ESRI ASCII, ...), square cells, north up; its grid and CRS are the rasters'")
-        ("release", po::value<std::string>(), "release area: polygons (GeoJSON, GeoPackage, Shapefile, ...) in the DTM's CRS; every DTM cell whose centre is inside releases blocks")
+        ("release", po::value<std::string>(), "release area: polygons (GeoJSON, GeoPackage, Shapefile, ...) in the DTM's CRS, every DTM cell whose centre is inside releasing "
+                    "blocks; or a raster (any grid in the DTM's CRS) whose cells other than 0 and NODATA release the DTM cells centred on them")
         ("runs-per-cell", po::value<int>()->default_value(10), "N: blocks released from each release cell (at a uniform point of the cell, random orientation)")
         ("trees", po::value<std::string>(), "trees: CSV x,y,dbh_cm in the DTM's CRS (or a sylvarock forest file), or a point layer with a dbh_cm field")
         ("stands", po::value<std::string>(), "instead of --trees: stand polygons in the DTM's CRS with fields `stand` (an inventory prefix, e.g. "
@@ -46,7 +47,8 @@ int runHazardCommand(int argc, const char* const* argv) {
         ("resume", po::bool_switch(), "finish an interrupted map in --out (kept run by run in OUT/hazard.sqlite): only the runs it lacks are run, "
                    "the outputs are those of an uninterrupted map; refused if any input differs")
         ("threads", po::value<int>()->default_value(0), "worker threads (0: all cores); results do not depend on it")
-        ("out", po::value<std::string>(), "output folder (new or empty): reach_probability.tif, passing_count.tif, deposits.tif, energy_p95_kj.tif, height_p95_m.tif, tree_impacts.tif, summary.json");
+        ("out", po::value<std::string>(), "output folder (new or empty): reach_probability.tif, passing_count.tif, deposits.tif, energy_p95_kj.tif, height_p95_m.tif, tree_impacts.tif, "
+                "map.png, rasters.png, summary.json, hazard.sqlite (docs/hazard.md lists every output)");
     po::variables_map vm;
     if (!parse(argc, argv, o, vm,
                "sylvarock hazard --dtm DTM --release RELEASE.geojson|RELEASE.tif --runs-per-cell N --out DIR [--trees POINTS | --stands POLYGONS] "

@@ -14,6 +14,11 @@
 
 namespace sylva::assess {
 
+namespace {
+// 2.5e8 cells: 2 GB as doubles (a 15 km x 15 km DTM at 1 m).
+constexpr double kMostRasterCells = 2.5e8;
+}  // namespace
+
 void initGdal() {
     static std::once_flag once;
     std::call_once(once, [] {
@@ -51,6 +56,10 @@ GeoRaster readRaster(const std::string& path) {
     RasterGrid& g = raster.grid;
     g.columns = ds->GetRasterXSize();
     g.rows = ds->GetRasterYSize();
+    // Read whole, as doubles: refused before anything is allocated beyond what this machine holds.
+    if (static_cast<double>(g.columns) * g.rows > kMostRasterCells)
+        throw InputError(path, 0, "a raster of " + std::to_string(g.columns) + " x " + std::to_string(g.rows) + " cells, more than the " +
+                                      readableNumber(kMostRasterCells) + " sylvarock reads at once: crop or resample it (gdalwarp -te, -tr)");
     if (ds->GetGeoTransform(g.geoTransform.data()) != CE_None)
         throw InputError(path, 0, "the raster has no georeferencing (geotransform): sylvarock needs cell size and position");
     const auto& t = g.geoTransform;

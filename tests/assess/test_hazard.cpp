@@ -94,6 +94,19 @@ TEST_F(Hazard, DtmReadingErrorsNameTheFile) {
     EXPECT_NE(errorOf([&] { readDtm((dir_ / "none.tif").string()); }).find("none.tif: cannot read it as a raster"), std::string::npos);
     const std::string rect = write("rect.asc", "ncols 3\nnrows 2\nxllcorner 0\nyllcorner 0\ndx 2\ndy 3\nNODATA_value -9999\n1 2 3\n4 5 6\n");
     EXPECT_NE(errorOf([&] { readDtm(rect); }).find("square cells"), std::string::npos) << errorOf([&] { readDtm(rect); });
+    // A header announcing 10^10 cells (a sparse GeoTIFF: no data written) is refused before it is read.
+    initGdal();
+    {
+        char** options = CSLSetNameValue(nullptr, "SPARSE_OK", "TRUE");
+        GDALDatasetUniquePtr huge(GetGDALDriverManager()->GetDriverByName("GTiff")->Create((dir_ / "huge.tif").c_str(), 100000, 100000, 1,
+                                                                                            GDT_Byte, options));
+        CSLDestroy(options);
+        ASSERT_TRUE(huge);
+        double gt[6] = {0, 1, 0, 100000, 0, -1};
+        huge->SetGeoTransform(gt);
+    }
+    EXPECT_NE(errorOf([&] { readDtm((dir_ / "huge.tif").string()); }).find("100000 x 100000 cells, more than"), std::string::npos)
+        << errorOf([&] { readDtm((dir_ / "huge.tif").string()); });
 }
 
 // The simulator works in metres: a DTM in degrees is refused, and so are absurd cells.

@@ -85,9 +85,11 @@ int main(int argc, char** argv) {
         std::printf("  %-20s %5.1f %%\n", dem::name(static_cast<dem::StepPhase>(p)),
                     100 * with.phases.seconds[p] / with.phases.total());
     const double cpu = std::accumulate(with.cpu.begin(), with.cpu.end(), 0.0);
-    std::printf("stem node-steps: %.3g, %.1f %% while the block touches the stem, %.1f %% after it left; %.2f million per CPU second of the runs\n",
-                double(with.nodeSteps.total()), 100.0 * with.nodeSteps.duringContact / std::max<double>(1, with.nodeSteps.total()),
-                100.0 * with.nodeSteps.afterContact / std::max<double>(1, with.nodeSteps.total()), with.nodeSteps.total() / cpu / 1e6);
+    const double steps = std::max<double>(1, double(with.nodeSteps.total()));
+    std::printf("stem node-steps: %.3g, %.2f million per CPU second of the runs; by what kept the stem awake:\n", steps,
+                steps / cpu / 1e6);
+    for (std::size_t r = 0; r < dem::kStemAwakeReasons; ++r)
+        std::printf("  %-32s %5.1f %%\n", dem::name(static_cast<dem::StemAwake>(r)), 100.0 * with.nodeSteps.byReason[r] / steps);
     std::printf("peak resident memory: %.0f MB\n", ru.ru_maxrss / 1024.0);
     return 0;
 }

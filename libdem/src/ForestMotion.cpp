@@ -62,7 +62,7 @@ void ForestMotion::wake(std::uint32_t tree, double t) {
     const double step = stem.stableTimeStep();
     const bool broken = falling(stem);
     // The all-awake reference steps every stem, standing or not.
-    awake_.push_back(AwakeStem{tree, std::move(stem), {}, step, t, broken, cfg_.activity.allAwake, {}, {}, false, std::nullopt});
+    awake_.push_back(AwakeStem{tree, std::move(stem), {}, step, t, broken, cfg_.activity.allAwake, StemAwake::Waiting, {}, {}, false, std::nullopt});
     stemPairsStale_ = true;
 }
 
@@ -237,7 +237,7 @@ void ForestMotion::integrate(double dt) {
             continue;
         }
         // lastBlockContact is set to the step's time at each touch: equal, the block touches it now.
-        (a.lastBlockContact == now_ ? nodeSteps_.duringContact : nodeSteps_.afterContact) += a.stem.nodeCount();
+        nodeSteps_[a.lastBlockContact == now_ ? StemAwake::Touched : a.heldBy] += a.stem.nodeCount();
         const double externalBefore = a.stem.ledger.externalWork;
         const StemEnergy e = stepper_.step(a.stem, dt, a.loads);
         // The stem's own budget without the work of the contact loads, which the contacts' springs
@@ -257,11 +257,17 @@ void ForestMotion::sleep(const RigidBody& block, double t) {
     if (empty() || cfg_.activity.allAwake) return;
     for (std::size_t k = awake_.size(); k-- > 0;) {
         AwakeStem& a = awake_[k];
-        if (!activity_.maySleep(block, trees_.tree(a.tree), a.stem, a.broken, a.lastBlockContact, t)) continue;
+        if (const auto held = activity_.holds(block, trees_.tree(a.tree), a.stem, a.broken, a.lastBlockContact, t)) {
+            a.heldBy = *held;
+            continue;
+        }
         bool leaning = false;  // on an awake neighbour
         for (const auto& st : stemTouches_)
             if (!st.ignored && (st.treeA == a.tree || st.treeB == a.tree)) leaning = true;
-        if (leaning) continue;
+        if (leaning) {
+            a.heldBy = StemAwake::Leaning;
+            continue;
+        }
         impacts_.close(a.tree, block, a.stem);
         Stem& s = a.stem;
         // Its vibration stops with it (the block is gone); that energy is booked, not lost silently.

@@ -53,12 +53,15 @@ bool StemActivity::nodeReaches(const Vec3& node, double reach, const PlacedTree&
     return !(node.z() > other.foot.z() + other.geometry.height + reach);
 }
 
-bool StemActivity::maySleep(const RigidBody& block, const PlacedTree& tree, const Stem& s, bool broken,
-                            double lastBlockContact, double t) const {
-    if (t - lastBlockContact < cfg_.sleepAfter) return false;
-    if (horizontalDistance(block.position, tree.foot) < blockReach(block, kSleepHysteresis) + baseRadius(tree)) return false;
+std::optional<StemAwake> StemActivity::holds(const RigidBody& block, const PlacedTree& tree, const Stem& s, bool broken,
+                                             double lastBlockContact, double t) const {
+    if (t - lastBlockContact < cfg_.sleepAfter) return StemAwake::Waiting;
+    const double reach = blockReach(block, kSleepHysteresis);
+    if (horizontalDistance(block.position, tree.foot) < reach + baseRadius(tree)) return StemAwake::BlockNear;
     // A falling top is not frozen mid-air.
-    return !(broken && t - lastBlockContact < cfg_.pieceMaxTime && fastestNode(s) > cfg_.pieceRestSpeed);
+    if (broken && t - lastBlockContact < cfg_.pieceMaxTime && fastestNode(s) > cfg_.pieceRestSpeed)
+        return StemAwake::PiecesFalling;
+    return std::nullopt;
 }
 
 }  // namespace sylva::dem

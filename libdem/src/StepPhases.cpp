@@ -30,4 +30,26 @@ PhaseTimes& PhaseTimes::operator+=(const PhaseTimes& other) {
     return *this;
 }
 
+const char* name(StemAwake reason) {
+    switch (reason) {
+        case StemAwake::Touched: return "touched by the block";
+        case StemAwake::Waiting: return "waiting (forest.sleep_after_s)";
+        case StemAwake::BlockNear: return "block within reach";
+        case StemAwake::PiecesFalling: return "pieces falling";
+        case StemAwake::Leaning: return "touching an awake stem";
+    }
+    return "?";
+}
+
+std::uint64_t NodeSteps::total() const {
+    std::uint64_t n = 0;
+    for (const std::uint64_t k : byReason) n += k;
+    return n;
+}
+
+NodeSteps& NodeSteps::operator+=(const NodeSteps& other) {
+    for (std::size_t i = 0; i < kStemAwakeReasons; ++i) byReason[i] += other.byReason[i];
+    return *this;
+}
+
 }  // namespace sylva::dem

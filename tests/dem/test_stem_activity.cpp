@@ -49,17 +49,18 @@ TEST(StemActivity, StemSleepsOnlyOnceTheBlockHasGoneAndItsPiecesRest) {
     const PlacedTree t = tree20();
     Stem s(t.geometry, StemParams{}, t.foot, t.support);
     const RigidBody near = ball(Vec3(1.5, 0, 0.5)), gone = ball(Vec3(20, 0, 0.5));
+    const std::optional<StemAwake> maySleep;
     // The block left 1 s ago.
-    EXPECT_TRUE(activity.maySleep(gone, t, s, false, 0.0, 1.0));
-    EXPECT_FALSE(activity.maySleep(gone, t, s, false, 0.0, 0.2)) << "before sleepAfter";
-    EXPECT_FALSE(activity.maySleep(near, t, s, false, 0.0, 1.0)) << "block still within reach";
+    EXPECT_EQ(activity.holds(gone, t, s, false, 0.0, 1.0), maySleep);
+    EXPECT_EQ(activity.holds(gone, t, s, false, 0.0, 0.2), StemAwake::Waiting) << "before sleepAfter";
+    EXPECT_EQ(activity.holds(near, t, s, false, 0.0, 1.0), StemAwake::BlockNear) << "block still within reach";
     // A broken stem whose top still falls at 3 m/s.
     s.velocity.back() = Vec3(0, 0, -3);
-    EXPECT_TRUE(activity.maySleep(gone, t, s, false, 0.0, 1.0)) << "a whole stem's sway does not hold it";
-    EXPECT_FALSE(activity.maySleep(gone, t, s, true, 0.0, 1.0)) << "a falling top is not frozen mid-air";
-    EXPECT_TRUE(activity.maySleep(gone, t, s, true, 0.0, 10.5)) << "a piece rolling on is let go after pieceMaxTime";
+    EXPECT_EQ(activity.holds(gone, t, s, false, 0.0, 1.0), maySleep) << "a whole stem's sway does not hold it";
+    EXPECT_EQ(activity.holds(gone, t, s, true, 0.0, 1.0), StemAwake::PiecesFalling) << "a falling top is not frozen mid-air";
+    EXPECT_EQ(activity.holds(gone, t, s, true, 0.0, 10.5), maySleep) << "a piece rolling on is let go after pieceMaxTime";
     s.velocity.back() = Vec3(0, 0, -0.1);
-    EXPECT_TRUE(activity.maySleep(gone, t, s, true, 0.0, 1.0)) << "pieces at rest";
+    EXPECT_EQ(activity.holds(gone, t, s, true, 0.0, 1.0), maySleep) << "pieces at rest";
 }
 
 TEST(StemActivity, DisplacedNodeWakesTheNeighboursItCanTouch) {

@@ -39,18 +39,19 @@ TEST(StepPhases, PhasesArePartOfTheRunAndTheTreeIsStepped) {
     EXPECT_GT(r.phases[StepPhase::BlockStem], 0.0);
 }
 
-// One stem is stepped while the block touches it and after it leaves: both counts are multiples of
-// its node count, the first at most one per step; without a forest there is nothing to count.
-TEST(StepPhases, NodeStepsCountTheStemsWorkDuringAndAfterTheImpact) {
+// One stem is stepped while the block touches it and after it leaves, first for forest.sleep_after_s:
+// each count is a multiple of its node count, the touches at most one per step; a lone tree leans on
+// no neighbour; without a forest there is nothing to count.
+TEST(StepPhases, NodeStepsCountTheStemsWorkByWhatKeptItAwake) {
     const Scene scene(loadScene(std::string(SYLVAROCK_DATA) + "/scenes/single-tree.ini", {"stop.max_time_s=3"}));
     const RunResult r = simulateBlock(scene, 0, 1);
     ASSERT_EQ(r.impacts.size(), 1u);
     const SceneConfig& cfg = scene.config();
     const std::uint64_t nodes = Stem(beechStem(cfg.tree.dbhCm), cfg.stem, Vec3::Zero(), StemFoot::RootSpring).nodeCount();
-    EXPECT_GT(r.nodeSteps.duringContact, 0u);
-    EXPECT_GT(r.nodeSteps.afterContact, 0u);
-    EXPECT_EQ(r.nodeSteps.duringContact % nodes, 0u);
-    EXPECT_EQ(r.nodeSteps.afterContact % nodes, 0u);
+    EXPECT_GT(r.nodeSteps[StemAwake::Touched], 0u);
+    EXPECT_GT(r.nodeSteps[StemAwake::Waiting], 0u);
+    EXPECT_EQ(r.nodeSteps[StemAwake::Leaning], 0u);
+    for (const std::uint64_t n : r.nodeSteps.byReason) EXPECT_EQ(n % nodes, 0u);
     EXPECT_LE(r.nodeSteps.total(), static_cast<std::uint64_t>(r.steps) * nodes);
     const Scene bare(loadScene(std::string(SYLVAROCK_DATA) + "/scenes/no-forest.ini", {"stop.max_time_s=3"}));
     EXPECT_EQ(simulateBlock(bare, 0, 1).nodeSteps.total(), 0u);

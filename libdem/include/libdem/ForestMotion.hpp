@@ -63,6 +63,7 @@ private:
         bool broken;              // some connection broken or the root plate gone: its pieces fall
         bool moving;              // touched since woken; until then it stands still, is not stepped
                                   // and does not limit the time step
+        StemAwake heldBy;         // what kept it awake at the last sleep check, once the block left it
         mutable std::vector<double> contactOmega2;  // per node, from the contacts' springs (stableStep)
         std::vector<Vec3> listedAt;  // node positions when stemPairs_ was made
         // Checked against the soil since woken. A stem touching the soil moves, and one that does not

@@ -4,10 +4,12 @@
 // Jolt: a stem joins when the block (or a displaced neighbour) can reach it before the next check,
 // and leaves once the block has gone and, if it is broken, its pieces have come to rest.
 #include <cstddef>
+#include <optional>
 
 #include "libdem/RigidBody.hpp"
 #include "libdem/SceneConfig.hpp"
 #include "libdem/Stem.hpp"
+#include "libdem/StepPhases.hpp"
 #include "libdem/TreeField.hpp"
 
 namespace sylva::dem {
@@ -31,11 +33,12 @@ public:
     double nodeReach(const Stem& s, std::size_t node, double dt, int stepsBetweenChecks) const;
     static bool nodeReaches(const Vec3& node, double reach, const PlacedTree& other);
 
-    // The stem may go back to sleep: the block left it `sleepAfter` ago and is out of reach, and a
-    // broken stem's pieces are at rest (or rolled on for `pieceMaxTime`). Whether an awake
-    // neighbour leans on it is the caller's to check.
-    bool maySleep(const RigidBody& block, const PlacedTree& tree, const Stem& s, bool broken, double lastBlockContact,
-                  double t) const;
+    // What keeps a stem the block touched last at `lastBlockContact` from going back to sleep at t
+    // (Waiting: not `sleepAfter` yet; BlockNear: the block within reach of its foot or of any node;
+    // PiecesFalling: broken, a piece still moving within `pieceMaxTime`), or nullopt: it may sleep.
+    // Whether an awake neighbour leans on it is the caller's to check.
+    std::optional<StemAwake> holds(const RigidBody& block, const PlacedTree& tree, const Stem& s, bool broken,
+                                   double lastBlockContact, double t) const;
 
 private:
     const ForestActivity& cfg_;

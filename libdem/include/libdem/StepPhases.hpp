@@ -35,16 +35,20 @@ struct PhaseTimes {
     PhaseTimes& operator+=(const PhaseTimes& other);
 };
 
-// The stems' node-steps, the unit of a forested run's work (bench/bench_stem_step times one): while
-// the block touches the stem, and after it has left it (swaying, falling) until the stem sleeps.
+// Why an awake stem is stepped: the block touches it, or, once the block has left it, what keeps it
+// from sleeping (StemActivity::holds; Leaning is ForestMotion's: an awake neighbour touches it).
+enum class StemAwake { Touched, Waiting, BlockNear, PiecesFalling, Leaning };
+inline constexpr std::size_t kStemAwakeReasons = 5;
+const char* name(StemAwake reason);
+
+// The stems' node-steps, the unit of a forested run's work (bench/bench_stem_step times one), by
+// what kept the stem awake.
 struct NodeSteps {
-    std::uint64_t duringContact = 0, afterContact = 0;
-    std::uint64_t total() const { return duringContact + afterContact; }
-    NodeSteps& operator+=(const NodeSteps& other) {
-        duringContact += other.duringContact;
-        afterContact += other.afterContact;
-        return *this;
-    }
+    std::array<std::uint64_t, kStemAwakeReasons> byReason{};
+    std::uint64_t& operator[](StemAwake r) { return byReason[static_cast<std::size_t>(r)]; }
+    std::uint64_t operator[](StemAwake r) const { return byReason[static_cast<std::size_t>(r)]; }
+    std::uint64_t total() const;
+    NodeSteps& operator+=(const NodeSteps& other);
 };
 
 // Laps a steady clock over a step: each lap books the time since the previous one to the phase that

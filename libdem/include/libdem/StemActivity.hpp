@@ -34,7 +34,7 @@ public:
     static bool nodeReaches(const Vec3& node, double reach, const PlacedTree& other);
 
     // What keeps a stem the block touched last at `lastBlockContact` from going back to sleep at t
-    // (Waiting: not `sleepAfter` yet; BlockNear: the block within reach of its foot or of any node;
+    // (Waiting: not `sleepAfter` yet; BlockNear: the block within reach of its foot;
     // PiecesFalling: broken, a piece still moving within `pieceMaxTime`), or nullopt: it may sleep.
     // Whether an awake neighbour leans on it is the caller's to check.
     std::optional<StemAwake> holds(const RigidBody& block, const PlacedTree& tree, const Stem& s, bool broken,

@@ -36,7 +36,8 @@ struct PhaseTimes {
 };
 
 // Why an awake stem is stepped: the block touches it, or, once the block has left it, what keeps it
-// from sleeping (StemActivity::holds; Leaning is ForestMotion's: an awake neighbour touches it).
+// from sleeping (StemActivity::holds; Leaning is ForestMotion's: an awake neighbour touches it). The
+// all-awake reference, whose stems never sleep, counts them as Waiting.
 enum class StemAwake { Touched, Waiting, BlockNear, PiecesFalling, Leaning };
 inline constexpr std::size_t kStemAwakeReasons = 5;
 const char* name(StemAwake reason);

@@ -20,7 +20,8 @@ struct RunOutcome {
 };
 
 // In this machine's layout, as the MPI messages (Bytes.hpp); decode throws std::runtime_error on
-// bytes that are not a whole record.
+// bytes that are not a whole record. `failed` is not in the bytes: the store keeps it in a column of
+// its own, and a failed run has no record.
 std::string encode(const RunOutcome& outcome);
 RunOutcome decode(const std::string& bytes);
 

@@ -39,7 +39,7 @@ struct PhaseTimes {
 // from sleeping (StemActivity::holds; Leaning is ForestMotion's: an awake neighbour touches it). The
 // all-awake reference, whose stems never sleep, counts them as Waiting.
 enum class StemAwake { Touched, Waiting, BlockNear, PiecesFalling, Leaning };
-inline constexpr std::size_t kStemAwakeReasons = 5;
+inline constexpr std::size_t kStemAwakeReasons = static_cast<std::size_t>(StemAwake::Leaning) + 1;  // the last one
 const char* name(StemAwake reason);
 
 // The stems' node-steps, the unit of a forested run's work (bench/bench_stem_step times one), by

@@ -12,7 +12,7 @@ are not followed to rest (forest.piece_max_time_s = 0): what they do later is no
 import argparse, concurrent.futures, csv, itertools, json, os, subprocess, sys, tempfile, time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-TREE_TERMS = ("bending_plasticity", "bending_damping", "root_plasticity", "rupture")
+TREE_TERMS = ("bending_plasticity", "bending_damping", "axial_damping", "root_plasticity", "rupture")
 CROWN_SHARE = 0.40642  # L_C / H_T, the paper's Eq. 12
 
 
@@ -33,7 +33,7 @@ def run_one(exe, extra, dbh, speed, height, ecc, h, volume):
         j = json.load(open(os.path.join(out, "energy.json")))
     if not j.get("impacts"):
         return {"impacts": 0}
-    tree = sum(j["impact_dissipated_j"][k] for k in TREE_TERMS)
+    tree = sum(j["impact_dissipated_j"].get(k, 0.0) for k in TREE_TERMS)  # axial_damping: absent before it existed
     # Broken below its crown (Eq. 12: the crown is the top 0.40642 H_T), or only a whipped top
     # snapping in the crown.
     below_crown = j["break_height_m"] is not None and j["break_height_m"] < (1 - CROWN_SHARE) * j["stem_height_m"]

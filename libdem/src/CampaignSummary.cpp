@@ -132,14 +132,14 @@ void writeImpactEnergyJson(const std::string& path, const RunResult& r) {
         j["root_failed"] = false;
     }
     j["dissipated_j"] = {{"bending_plasticity", f.bendingPlasticity}, {"bending_damping", f.bendingDamping},
-                         {"root_plasticity", f.rootPlasticity},       {"rupture", f.rupture},
+                         {"axial_damping", f.axialDamping},           {"root_plasticity", f.rootPlasticity},       {"rupture", f.rupture},
                          {"contact_friction", f.contactFriction},     {"soil_damping", r.energy.contactDamping},
                          {"soil_friction", r.energy.friction},        {"stem_soil_damping", f.contactDamping},
                          {"contact_crushing", f.contactCrushing},     {"left_vibrating_in_stems", f.frozen}};
     // The tree's own terms over the impact only (first contact to the block leaving the tree).
     const StemLedger during = r.impacts.empty() ? StemLedger{} : r.impacts.front().duringImpact;
     j["impact_dissipated_j"] = {{"bending_plasticity", during.bendingPlasticity}, {"bending_damping", during.bendingDamping},
-                                {"root_plasticity", during.rootPlasticity},       {"rupture", during.rupture}};
+                                {"axial_damping", during.axialDamping},           {"root_plasticity", during.rootPlasticity},       {"rupture", during.rupture}};
     j["created_by_unloading_law_j"] = f.unloadingGain;
     j["energy_imbalance"] = r.energy.imbalance;
     j["energy_flag"] = r.energy.flagged;
@@ -175,7 +175,7 @@ void writeSummaryJson(const std::string& path, const CampaignSummary& s, double 
     // sleep still vibrating must stay small next to the trees' own terms (issue 11, point 3).
     const ForestLedger& f = s.forestEnergy;
     j["forest_energy_j"] = {{"bending_plasticity", f.bendingPlasticity}, {"bending_damping", f.bendingDamping},
-                            {"root_plasticity", f.rootPlasticity},       {"rupture", f.rupture},
+                            {"axial_damping", f.axialDamping},           {"root_plasticity", f.rootPlasticity},       {"rupture", f.rupture},
                             {"contact_friction", f.contactFriction},     {"stem_soil_damping", f.contactDamping},
                             {"contact_crushing", f.contactCrushing},     {"left_vibrating_in_stems", f.frozen}};
     j["left_vibrating_share_of_tree_terms"] = f.treeTerms() > 0 ? f.frozen / f.treeTerms() : 0.0;

@@ -53,15 +53,28 @@ ConnectionBeam::ConnectionBeam(const BendingParams& p, double diameterA, double 
 // spring's: theta = sum w (c m + p), eps = sum w xi (c m + p) + 4 / (l^2 k_s) dM, where m = M + xi dM,
 // c the section's compliance and p its plastic rotation (the force-based element's compatibility).
 ConnectionBeam::Flexibility ConnectionBeam::flexibility(const Channel& ch) const {
+    std::array<double, kMaxSections> c{};
+    for (int i = 0; i < rule_->count; ++i) c[i] = compliance(i, ch.section[i]);
+    return flexibility(c);
+}
+
+ConnectionBeam::Flexibility ConnectionBeam::flexibility(const std::array<double, kMaxSections>& compliance) const {
     const Rule& r = *rule_;
     Flexibility f{0, 0, 4 / (length_ * length_ * shearStiffness_)};
     for (int i = 0; i < r.count; ++i) {
-        const double wc = r.weight[i] * compliance(i, ch.section[i]);
+        const double wc = r.weight[i] * compliance[i];
         f.mm += wc;
         f.mc += wc * r.xi[i];
         f.cc += wc * r.xi[i] * r.xi[i];
     }
     return f;
+}
+
+Eigen::Matrix2d ConnectionBeam::elasticStiffness() const {
+    const Flexibility f = flexibility(elasticCompliance_);
+    Eigen::Matrix2d flex;
+    flex << f.mm, f.mc, f.mc, f.cc;
+    return flex.inverse();
 }
 
 void ConnectionBeam::solveForces(Channel& ch, const Moment& theta, const Moment& eps) const {

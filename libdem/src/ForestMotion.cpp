@@ -4,6 +4,7 @@
 #include "libdem/ForestMotion.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -59,10 +60,10 @@ void ForestMotion::wake(std::uint32_t tree, double t) {
     } else {
         injected_ += potentialEnergy(stem, cfg_.gravity) + stem.elasticEnergy();  // the stem enters the energy budget
     }
-    const double step = stem.stableTimeStep();
+    const StableStep stability = stem.stability();
     const bool broken = falling(stem);
     // The all-awake reference steps every stem, standing or not.
-    awake_.push_back(AwakeStem{tree, std::move(stem), {}, step, t, broken, cfg_.activity.allAwake, StemAwake::Waiting, {}, {}, false, std::nullopt});
+    awake_.push_back(AwakeStem{tree, std::move(stem), {}, stability, t, broken, cfg_.activity.allAwake, StemAwake::Waiting, {}, {}, false, std::nullopt});
     stemPairsStale_ = true;
 }
 
@@ -134,47 +135,68 @@ void ForestMotion::wakeNeighbours() {
 }
 
 double ForestMotion::stableStep(const RigidBody& block, StableStep& blockStep) const {
-    // Each contact spring k adds k w^2 (1/m + |arm x n|^2 / I) to the squared frequency of each node
-    // that carries a share w of it; they add up per node (Gershgorin), and on top of the stem's own
-    // springs: omega^2 = (2 / dt_stem)^2 + max over nodes of the contacts' sum.
-    for (auto& a : awake_) a.contactOmega2.assign(a.stem.nodeCount(), 0.0);
+    // A contact spring k along n vibrates on its own (a rank-one stiffness) at omega^2 = k W, W the
+    // inverse mass of everything it pushes apart along n: the block's, and each stem node's share
+    // w^2 (1/m + |arm x n|^2 / I) of a connection it touches; its dashpot c damps it at the rate c W.
+    // Each node it moves takes both, they add up per node over its contacts, and on top of the stem's
+    // own bound: omega^2 and the damping rate, which the soil's dashpot (Eq. 16, a ratio of 0.54)
+    // makes as much a limit as the springs.
+    for (auto& a : awake_) a.contactBounds.assign(a.stem.nodeCount(), StableStep{});
     auto awakeOf = [this](std::uint32_t tree) -> const AwakeStem& {
         for (const auto& a : awake_)
             if (a.tree == tree) return a;
         throw std::logic_error("contact with a stem that is not awake");
     };
-    auto onConnection = [&](std::uint32_t tree, std::size_t c, double t, const ContactGeometry& g, double k) {
+    struct Share {
+        const AwakeStem* stem;
+        std::size_t node;
+    };
+    std::array<Share, 4> moved{};
+    std::size_t count = 0;
+    double inverse = 0;
+    auto onConnection = [&](std::uint32_t tree, std::size_t c, double t, const ContactGeometry& g) {
         const AwakeStem& a = awakeOf(tree);
         const Vec3 arm = (g.point - ((1 - t) * a.stem.position[c] + t * a.stem.position[c + 1])).cross(g.normal);
         for (const auto& [node, w] : {std::pair<std::size_t, double>{c, 1 - t}, {c + 1, t}}) {
             double inv = 0;
             if (a.stem.translates(node)) inv += 1 / a.stem.mass()[node];
             if (a.stem.rotates(node)) inv += arm.squaredNorm() / a.stem.inertia()[node];
-            a.contactOmega2[node] += k * w * w * inv;
+            inverse += w * w * inv;
+            if (w * w * inv > 0) moved[count++] = Share{&a, node};
         }
     };
+    auto book = [&](double k, double c) {
+        for (std::size_t m = 0; m < count; ++m) moved[m].stem->contactBounds[moved[m].node].add(k, c, inverse);
+        count = 0;
+        inverse = 0;
+    };
     for (const auto& t : blockTouches_) {
-        const double k = blockStemLaw_->normalStiffness(t.geometry);
-        blockStep.add(k, 0, block.inverseMassAlong(t.geometry.point, t.geometry.normal));
-        onConnection(t.tree, t.connection, t.t, t.geometry, k);
+        const double k = blockStemLaw_->normalStiffness(t.geometry), c = blockStemLaw_->dampingCoefficientAt(t.geometry);
+        const double blockInverse = block.inverseMassAlong(t.geometry.point, t.geometry.normal);
+        blockStep.add(k, c, blockInverse);  // the block's own side, at its own safety
+        onConnection(t.tree, t.connection, t.t, t.geometry);
+        inverse += blockInverse;
+        book(k, c);
     }
     for (const auto& t : stemTouches_) {
         if (t.ignored) continue;
-        const double k = stemStemLaw_->normalStiffness(t.geometry);
-        onConnection(t.treeA, t.connectionA, t.s, t.geometry, k);
-        onConnection(t.treeB, t.connectionB, t.t, t.geometry, k);
+        onConnection(t.treeA, t.connectionA, t.s, t.geometry);
+        onConnection(t.treeB, t.connectionB, t.t, t.geometry);
+        book(stemStemLaw_->normalStiffness(t.geometry), stemStemLaw_->dampingCoefficientAt(t.geometry));
     }
     for (const auto& t : soilTouches_) {
         const AwakeStem& a = awakeOf(t.tree);
-        a.contactOmega2[t.node] += stemSoilLaw_->normalStiffness(t.geometry) *
-                                   nodeInverseMass(a.stem, t.node, t.geometry.point, t.geometry.normal);
+        a.contactBounds[t.node].add(stemSoilLaw_->normalStiffness(t.geometry), stemSoilLaw_->dampingCoefficientAt(t.geometry),
+                                    nodeInverseMass(a.stem, t.node, t.geometry.point, t.geometry.normal));
     }
     double limit = std::numeric_limits<double>::infinity();
     for (const auto& a : awake_) {
         if (!a.moving) continue;
-        const double own = 2 / a.stableStep;
-        const double contacts = *std::max_element(a.contactOmega2.begin(), a.contactOmega2.end());
-        limit = std::min(limit, 2 / std::sqrt(own * own + contacts));
+        for (const StableStep& node : a.contactBounds) {
+            StableStep both = a.stability;
+            both += node;
+            limit = std::min(limit, both.critical());
+        }
     }
     return limit;
 }
@@ -245,12 +267,12 @@ void ForestMotion::integrate(double dt) {
         stems += e.total() + e.netLoss + 0.5 * (externalBefore + a.stem.ledger.externalWork);
         const bool broken = falling(a.stem);
         if (broken != a.broken) {
-            a.stableStep = a.stem.stableTimeStep();  // a broken connection no longer limits the step
+            a.stability = a.stem.stability();  // a broken connection no longer limits the step
             a.broken = broken;
         }
     }
     budget_ += stems + contactLedger_.friction + contactLedger_.contactDamping + contactLedger_.crushing + frozenElastic_ + frozenPotential_ + slept_.frozen + slept_.bendingPlasticity +
-               slept_.bendingDamping + slept_.rootPlasticity + slept_.rupture - slept_.unloadingGain - injected_;
+               slept_.bendingDamping + slept_.axialDamping + slept_.rootPlasticity + slept_.rupture - slept_.unloadingGain - injected_;
 }
 
 void ForestMotion::sleep(const RigidBody& block, double t) {

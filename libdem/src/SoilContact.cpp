@@ -30,6 +30,11 @@ SoilContact::SoilContact(const SoilContactParams& p, double blockMass)
     if (!(p.frictionDeg >= 0 && p.frictionDeg < 90)) throw InputError("soil.friction_deg must be in [0, 90)");
 }
 
+// Eq. 16 with the mass at this contact when it is not the block's (a stem node on the soil).
+double SoilContact::dampingCoefficientAt(const ContactGeometry& g) const {
+    return g.movingMass > 0 ? ratio_ * 2.0 * std::sqrt(kn_ * g.movingMass) : alpha_;
+}
+
 Vec3 SoilContact::force(const ContactGeometry& g, ContactHistory& h, double dt, DissipationLedger& ledger) const {
     const double overlapRate = -g.normal.dot(g.relativeVelocity);  // dU_n/dt > 0 while approaching
     // Eq. 14 as written: the dashpot acts on loading and unloading alike, so near the end of a
@@ -37,8 +42,7 @@ Vec3 SoilContact::force(const ContactGeometry& g, ContactHistory& h, double dt, 
     // dashpotPulls = false the normal force is floored at zero, as Yade's viscoelastic law does
     // (docs/model.md compares the two readings).
     const double spring = kn_ * g.overlap;
-    // Eq. 16 with the mass at this contact when it is not the block's (a stem node on the soil).
-    const double alpha = g.movingMass > 0 ? ratio_ * 2.0 * std::sqrt(kn_ * g.movingMass) : alpha_;
+    const double alpha = dampingCoefficientAt(g);
     const double fn = dashpotPulls_ ? spring + alpha * overlapRate : std::max(0.0, spring + alpha * overlapRate);
     // Work of the dashpot over the last step: the mean of the forces applied before and after it
     // (trapezoid, as the leapfrog applies them; each along its own normal, which turns as the block

@@ -42,4 +42,6 @@ double ZonedSoilContact::storedEnergy(const ContactGeometry& g, const ContactHis
 
 double ZonedSoilContact::normalStiffness(const ContactGeometry& g) const { return lawAt(g).normalStiffness(g); }
 
+double ZonedSoilContact::dampingCoefficientAt(const ContactGeometry& g) const { return lawAt(g).dampingCoefficientAt(g); }
+
 }  // namespace sylva::dem

@@ -16,7 +16,7 @@ namespace {
 // Energy that left the stem up to a step's start (StemEnergy::netLoss), the power terms by the
 // trapezoid rule over the step from `before` to `after`.
 double netLoss(const StemLedger& before, const StemLedger& after) {
-    return after.bendingPlasticity + after.rootPlasticity + after.rupture - after.unloadingGain +
+    return after.bendingPlasticity + after.axialDamping + after.rootPlasticity + after.rupture - after.unloadingGain +
            0.5 * (before.bendingDamping + after.bendingDamping + before.relaxation + after.relaxation -
                   before.externalWork - after.externalWork);
 }

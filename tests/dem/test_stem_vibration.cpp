@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "libdem/Stem.hpp"
+#include "libdem/StemParameterSet.hpp"
 #include "libdem/StemStepper.hpp"
 
 using namespace sylva::dem;
@@ -252,4 +253,41 @@ TEST(StemVibration, ConstantLossFactorDampsTheFirstModeAsEtaSays) {
     std::printf("  omega_1 %.3f rad/s: dissipated %.4f of the energy given in %.0f s, expected %.4f\n", mode.omega, measured,
                 duration, expected);
     EXPECT_NEAR(measured, expected, 0.05 * expected);
+}
+
+// Wood's loss factor in the axial springs (Stem.cpp, docs/model-stems.md "Time step"): a dashpot of
+// damping ratio eta / 2 at the connection's highest axial frequency omega_e, eta omega / (2 omega_e)
+// below it. The axial zig-zag (node against node) of a tapered stem spreads over the top of the
+// axial band, 0.8-1 omega_e, so its energy decays at eta omega^2 / omega_e, between 0.64 and 1 times
+// eta omega_e: after t = 1 / (eta omega_e) it keeps between exp(-1) = 0.37 and exp(-0.64) = 0.53 of
+// itself (peaks over a tenth of t, at 0.4 of the step limit, where a peak reads the energy to 4 %).
+// The paper's stems have no such dashpot: their zig-zag keeps its energy.
+TEST(StemVibration, AxialDashpotDampsTheAxialZigZagAsEtaSays) {
+    const auto keptFraction = [](const StemParams& p, double& omegaE) {
+        Stem stem(beechStem(20), p, Vec3::Zero(), StemFoot::Clamped);
+        for (std::size_t i = 1; i < stem.nodeCount(); ++i) stem.velocity[i] = Vec3(0, 0, i % 2 ? 0.01 : -0.01);
+        omegaE = 2 / stem.stableTimeStep();
+        const double duration = 1 / (0.02 * omegaE), dt = 0.4 * stem.stableTimeStep();
+        StemStepper stepper(Vec3::Zero());
+        double first = 0, last = 0;
+        for (double t = 0; t < duration; t += dt) {
+            const double e = stepper.step(stem, dt).total();
+            if (t < 0.1 * duration) first = std::max(first, e);
+            if (t > 0.9 * duration) last = std::max(last, e);
+        }
+        return last / first;
+    };
+    // The calibrated set: its step is the axial element's (StemTimeStep), so 2 / dt is omega_e.
+    StemParams wood;
+    StemContactParams contact;
+    apply(StemParameterSet::Calibrated, wood, contact);
+    ASSERT_EQ(wood.bending.lossFactor, 0.02);
+    double omegaE = 0, unused = 0;
+    const double damped = keptFraction(wood, omegaE);
+    const double paper = keptFraction(undamped(0.5), unused);
+    std::printf("  omega_e %.0f rad/s: the zig-zag keeps %.3f of its energy after 1 / (eta omega_e) = %.2f ms (%.3f undamped)\n",
+                omegaE, damped, 1e3 / (0.02 * omegaE), paper);
+    EXPECT_GT(damped, std::exp(-1.0));
+    EXPECT_LT(damped, std::exp(-0.64));
+    EXPECT_GT(paper, 0.95);
 }

@@ -45,6 +45,9 @@ public:
     double storedEnergy() const { return stored_; }  // bending and shear, recoverable elastically, J
     const HingeCoefficients& coefficients() const { return k_; }  // of the whole connection at D_con
     double shearStiffness() const { return shearStiffness_; }
+    // Of one moment component, intact and elastic: (M, dM) = S (theta, eps). Yielding only softens it
+    // (K_Unld < K_Elast, then the plastic branch), so it bounds the connection's stiffness for good.
+    Eigen::Matrix2d elasticStiffness() const;
     int sectionCount() const;
     BendingReading reading() const { return reading_; }
 
@@ -71,6 +74,7 @@ private:
     };
     HingeWork deformChannel(Channel& ch, const Moment& theta, const Moment& eps);
     Flexibility flexibility(const Channel& ch) const;
+    Flexibility flexibility(const std::array<double, kMaxSections>& compliance) const;
     void solveForces(Channel& ch, const Moment& theta, const Moment& eps) const;
     double channelEnergy(const Channel& ch) const;
     double compliance(int i, const Section& s) const { return s.yielded ? unloadingCompliance_[i] : elasticCompliance_[i]; }

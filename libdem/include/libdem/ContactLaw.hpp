@@ -46,6 +46,8 @@ public:
     // Normal stiffness and dashpot coefficient at this contact: they set the stable time step.
     virtual double normalStiffness(const ContactGeometry& g) const = 0;
     virtual double dampingCoefficient() const { return 0.0; }
+    // The dashpot at this contact (a stem node's on the soil follows the node's mass: Eq. 16).
+    virtual double dampingCoefficientAt(const ContactGeometry&) const { return dampingCoefficient(); }
     // The stiffest this law is anywhere, for the room a step leaves for contacts still to come.
     virtual double largestNormalStiffness() const { return normalStiffness(ContactGeometry{}); }
 };

@@ -6,7 +6,7 @@
 namespace sylva::dem {
 
 struct ForestLedger {
-    double bendingPlasticity = 0, bendingDamping = 0, rootPlasticity = 0, rupture = 0;
+    double bendingPlasticity = 0, bendingDamping = 0, axialDamping = 0, rootPlasticity = 0, rupture = 0;
     double unloadingGain = 0;    // created by Fig. 3 at a connection's first yield (docs/model-stems.md)
     double contactFriction = 0;  // block/stem, stem/stem and stem/soil sliding
     double contactDamping = 0;   // the soil's dashpot under stems and broken pieces (Eqs. 14-16)
@@ -14,9 +14,10 @@ struct ForestLedger {
     double frozen = 0;           // kinetic energy of stems put to sleep while still vibrating
 
     // The tree's own terms: what the stems themselves took.
-    double treeTerms() const { return bendingPlasticity + bendingDamping + rootPlasticity + rupture; }
+    double treeTerms() const { return bendingPlasticity + bendingDamping + axialDamping + rootPlasticity + rupture; }
     void add(const ForestLedger& o) {
-        bendingPlasticity += o.bendingPlasticity, bendingDamping += o.bendingDamping, rootPlasticity += o.rootPlasticity;
+        bendingPlasticity += o.bendingPlasticity, bendingDamping += o.bendingDamping, axialDamping += o.axialDamping;
+        rootPlasticity += o.rootPlasticity;
         rupture += o.rupture, unloadingGain += o.unloadingGain, contactFriction += o.contactFriction;
         contactDamping += o.contactDamping, contactCrushing += o.contactCrushing, frozen += o.frozen;
     }
@@ -25,6 +26,7 @@ struct ForestLedger {
     void addStem(const StemLedger& s, double sign = 1) {
         bendingPlasticity += sign * s.bendingPlasticity;
         bendingDamping += sign * s.bendingDamping;
+        axialDamping += sign * s.axialDamping;
         rootPlasticity += sign * s.rootPlasticity;
         rupture += sign * s.rupture;
         unloadingGain += sign * s.unloadingGain;

@@ -58,13 +58,13 @@ private:
         std::uint32_t tree;
         Stem stem;
         StemLoads loads;
-        double stableStep;
+        StableStep stability;  // its own springs' (Stem::stability)
         double lastBlockContact;  // time of the last block contact (or of waking)
         bool broken;              // some connection broken or the root plate gone: its pieces fall
         bool moving;              // touched since woken; until then it stands still, is not stepped
                                   // and does not limit the time step
         StemAwake heldBy;         // what kept it awake at the last sleep check, once the block left it
-        mutable std::vector<double> contactOmega2;  // per node, from the contacts' springs (stableStep)
+        mutable std::vector<StableStep> contactBounds;  // per node, from the contacts' springs and dashpots (stableStep)
         std::vector<Vec3> listedAt;  // node positions when stemPairs_ was made
         // Checked against the soil since woken. A stem touching the soil moves, and one that does not
         // move keeps its nodes where they were checked: it needs no new check.

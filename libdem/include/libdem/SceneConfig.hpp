@@ -51,7 +51,7 @@ struct SingleTreeConfig {
 
 struct IntegrationConfig {
     double safety = 0.3;        // dt = safety x stable limit of the block's springs
-    double stemSafety = 0.8;    // and at most stemSafety x the awake stems' limit (a Gershgorin bound, 1.1-2.9x below the true one)
+    double stemSafety = 0.8;    // and at most stemSafety x the awake stems' limit with their contacts (Stem::stability: within 2 % of a calibrated stem's own)
     double forcedDt = 0;        // > 0: use this step (refused if above the stable limit)
     int anticipatedContacts = 4;  // the step stays stable for this many new contacts at once
     double energyTolerance = 0.1;  // audit: relative energy growth that stops a run (SimulationError)

@@ -24,6 +24,7 @@ public:
     double storedEnergy(const ContactGeometry& g, const ContactHistory& h) const override;
     double normalStiffness(const ContactGeometry&) const override { return kn_; }
     double dampingCoefficient() const override { return alpha_; }
+    double dampingCoefficientAt(const ContactGeometry& g) const override;
     double tangentialStiffness() const { return kt_; }  // K_t (Eq. 19)
 
 private:

@@ -34,6 +34,7 @@ public:
     double normalStiffness(const ContactGeometry& g) const override;
     // The largest of the zones: one coefficient serves the whole block's stable step, which must hold on every soil.
     double dampingCoefficient() const override { return largestDamping_; }
+    double dampingCoefficientAt(const ContactGeometry& g) const override;
     double largestNormalStiffness() const override { return largestStiffness_; }
 
 private:

@@ -12,6 +12,12 @@ public:
     // gamma / (2 omega): both bounds enter, so the step stays below the limit of every mode.
     double critical() const;
     double omegaSquared() const { return omega2_; }
+    // Both bounds of springs acting on the same body add (as add() does).
+    StableStep& operator+=(const StableStep& other) {
+        omega2_ += other.omega2_;
+        gamma_ += other.gamma_;
+        return *this;
+    }
 
 private:
     double omega2_ = 0, gamma_ = 0;

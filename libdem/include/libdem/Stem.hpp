@@ -4,7 +4,7 @@
 // at H_T. Each cone segment's mass goes half to each of its nodes; the crown mass m_C is spread
 // equally over the nodes within L_C of the top. Between neighbouring nodes a connection of length l
 // and mean diameter D_con carries linear elastic axial and twist springs (MOE and
-// G = MOE / (2 (1 + nu))) and, for bending and shear, a ConnectionBeam (the trilinear law of Fig. 3
+// G = MOE / (2 (1 + nu)); the axial one damped by wood's loss factor) and, for bending and shear, a ConnectionBeam (the trilinear law of Fig. 3
 // on its sections). The foot is clamped (coppice stems) or held
 // in place and turning on the root spring (single trees). A broken connection transmits nothing:
 // the part above keeps moving as a free chain.
@@ -15,6 +15,7 @@
 #include "libdem/ConnectionBeam.hpp"
 #include "libdem/RigidBody.hpp"
 #include "libdem/RootSpring.hpp"
+#include "libdem/StableStep.hpp"
 #include "libdem/StemLedger.hpp"
 #include "libdem/StemParams.hpp"
 
@@ -83,10 +84,10 @@ public:
     void updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque, double dt);
     double elasticEnergy() const { return elasticEnergy_; }  // in all springs at the last update, J
     double kineticEnergy() const;  // from the current velocities, J
-    // Largest stable explicit step: for each moving node, a Gershgorin bound of the highest
-    // eigen-frequency of the springs acting on it (stiffest connections, lightest nodes), with the
-    // bending viscosity's damping ratio (StableStep).
+    // Largest stable explicit step, from bounds of the highest eigen-frequency and of the highest
+    // damping rate of its springs and dashpots (Irons' element-by-element bound, Stem.cpp; StableStep).
     double stableTimeStep() const;
+    StableStep stability() const;  // the two bounds, to which contacts add theirs
 
 private:
     struct Connection {
@@ -94,6 +95,8 @@ private:
         double axial, twist;  // N/m, N m/rad
         ConnectionBeam bending;  // bending and shear
         BendingDamping damping;  // of the bending (Eqs. 7-8 or wood's loss factor)
+        double axialDamping = 0;  // N s/m: wood's loss factor in the axial spring (constant_loss only)
+        double dashpotForce = 0, dashpotStretch = 0;  // N, m: its force at the last step, and the axial stretch then
         double weightCompression = 0;  // m: how much the weight above shortens the axial spring (carryOwnWeight)
     };
     StemGeometry geometry_;

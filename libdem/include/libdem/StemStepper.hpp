@@ -16,8 +16,9 @@ struct StemLoads {
 
 // Mechanical energy of a stem at the start of a step, J (potential relative to height 0), and the
 // energy that left it up to then: dissipated - StemLedger::unloadingGain - external work. The
-// ledger's entries are of two kinds: the laws' (plasticity, rupture, gain) are known exactly at the
-// configuration of the step's start; the power terms (viscosity, relaxation, loads) are taken over
+// ledger's entries are of two kinds: the laws' (plasticity, rupture, gain, and the axial dashpot's
+// work, booked once the step it acted over is made) are known exactly at the configuration of the
+// step's start; the power terms (viscosity, relaxation, loads) are taken over
 // the step about to be made, of which half belongs before its start (trapezoid rule).
 // total() + netLoss is constant up to the integration's error.
 struct StemEnergy {

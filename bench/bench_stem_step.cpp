@@ -24,9 +24,7 @@ constexpr int kSteps = 20000;
 
 // Nanoseconds per node-step of one swing; `energyOut` keeps the work from being optimised away.
 double swing(double spacing, double& energyOut) {
-    StemParams p;
-    StemContactParams contact;
-    apply(StemParameterSet::Calibrated, p, contact);
+    StemParams p = stemParameters(StemParameterSet::Calibrated);
     p.nodeSpacing = spacing;
     Stem stem(beechStem(20), p, Vec3::Zero(), StemFoot::RootSpring);
     const Vec3 gravity(0, 0, -9.81);

@@ -27,4 +27,11 @@ void apply(StemParameterSet set, StemParams& stem, StemContactParams& contact) {
     stem.root.failureRotation = 25 * std::acos(-1.0) / 180;  // "Anchorage": the plate lets go
 }
 
+StemParams stemParameters(StemParameterSet set) {
+    StemParams stem;
+    StemContactParams contact;
+    apply(set, stem, contact);
+    return stem;
+}
+
 }  // namespace sylva::dem

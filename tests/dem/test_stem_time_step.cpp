@@ -13,7 +13,6 @@
 #include "libdem/RotationVector.hpp"
 #include "libdem/SimulationError.hpp"
 #include "libdem/Stem.hpp"
-#include "libdem/StemContact.hpp"
 #include "libdem/StemParameterSet.hpp"
 #include "libdem/StemStepper.hpp"
 
@@ -58,12 +57,7 @@ StemParams viscous(double tau) {
     return p;
 }
 
-StemParams calibrated() {
-    StemParams p;
-    StemContactParams contact;
-    apply(StemParameterSet::Calibrated, p, contact);
-    return p;
-}
+StemParams calibrated() { return stemParameters(StemParameterSet::Calibrated); }
 
 // Undamped stable limit 2 / omega_max of the whole stem at rest: the stiffness of its connections
 // and root spring by central differences of updateConnections (translations, and small turns applied

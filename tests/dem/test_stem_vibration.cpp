@@ -278,9 +278,7 @@ TEST(StemVibration, AxialDashpotDampsTheAxialZigZagAsEtaSays) {
         return last / first;
     };
     // The calibrated set: its step is the axial element's (StemTimeStep), so 2 / dt is omega_e.
-    StemParams wood;
-    StemContactParams contact;
-    apply(StemParameterSet::Calibrated, wood, contact);
+    const StemParams wood = stemParameters(StemParameterSet::Calibrated);
     ASSERT_EQ(wood.bending.lossFactor, 0.02);
     double omegaE = 0, unused = 0;
     const double damped = keptFraction(wood, omegaE);

@@ -19,12 +19,7 @@ namespace {
 const double kPi = std::acos(-1.0);
 const std::string kWinching = std::string(SYLVAROCK_DATA) + "/calibration/anchorage-winching.csv";
 
-StemParams calibrated() {
-    StemParams p;
-    StemContactParams contact;
-    apply(StemParameterSet::Calibrated, p, contact);
-    return p;
-}
+StemParams calibrated() { return stemParameters(StemParameterSet::Calibrated); }
 
 // Volume of the stem's cone from its taper, by Simpson's rule on 200 slices (the taper is linear, so
 // the integrand is a quadratic and the rule exact): independent of how the stem lumps its mass.

@@ -18,5 +18,7 @@ const char* name(StemParameterSet set);
 
 // The stem and its contacts of a set; the keys of a scene then change single values of it.
 void apply(StemParameterSet set, StemParams& stem, StemContactParams& contact);
+// The stem's part of a set alone (a stem built apart from any scene).
+StemParams stemParameters(StemParameterSet set);
 
 }  // namespace sylva::dem

@@ -114,7 +114,7 @@ Stem::Stem(const StemGeometry& g, const StemParams& p, const Vec3& foot, StemFoo
         inertia_[i] = mass_[i] * (diameter[i] * diameter[i] / 16 + share * share / 12);
     }
     // Wood's loss factor damps its axial vibration as it damps its bending (docs/model-stems.md,
-    // "Axial damping"): a dashpot c = eta k / omega, omega the connection's highest axial frequency
+    // "Time step"): a dashpot c = eta k / omega, omega the connection's highest axial frequency
     // (omega^2 = k (1/m_a + 1/m_b), each node's mass shared by its connections, as stableTimeStep
     // bounds it), gives the loss factor eta there and less below. The paper's stem has none.
     if (p.bending.damping == StemDamping::ConstantLoss)

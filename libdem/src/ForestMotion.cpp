@@ -192,7 +192,9 @@ double ForestMotion::stableStep(const RigidBody& block, StableStep& blockStep) c
     double limit = std::numeric_limits<double>::infinity();
     for (const auto& a : awake_) {
         if (!a.moving) continue;
+        limit = std::min(limit, a.stability.critical());
         for (const StableStep& node : a.contactBounds) {
+            if (node.omegaSquared() == 0) continue;  // no contact: the stem's own bound, taken above
             StableStep both = a.stability;
             both += node;
             limit = std::min(limit, both.critical());

@@ -90,6 +90,9 @@ int main(int argc, char** argv) {
                 steps / cpu / 1e6);
     for (std::size_t r = 0; r < dem::kStemAwakeReasons; ++r)
         std::printf("  %-32s %5.1f %%\n", dem::name(static_cast<dem::StemAwake>(r)), 100.0 * with.nodeSteps.byReason[r] / steps);
+    std::printf("  ... of which broken stems (a connection or the root plate gone) %.1f %%, stems on the soil or\n"
+                "      against a neighbour %.1f %%\n",
+                100.0 * with.nodeSteps.broken / steps, 100.0 * with.nodeSteps.onSoilOrStem / steps);
     std::printf("peak resident memory: %.0f MB\n", ru.ru_maxrss / 1024.0);
     return 0;
 }

@@ -63,7 +63,7 @@ void ForestMotion::wake(std::uint32_t tree, double t) {
     const StableStep stability = stem.stability();
     const bool broken = falling(stem);
     // The all-awake reference steps every stem, standing or not.
-    awake_.push_back(AwakeStem{tree, std::move(stem), {}, stability, t, broken, cfg_.activity.allAwake, StemAwake::Waiting, {}, {}, false, std::nullopt});
+    awake_.push_back(AwakeStem{tree, std::move(stem), {}, stability, t, broken, cfg_.activity.allAwake, StemAwake::Waiting, {}, {}, false, false, std::nullopt});
     stemPairsStale_ = true;
 }
 
@@ -103,10 +103,17 @@ void ForestMotion::detect(const RigidBody& block, const std::vector<Vec3>& centr
 }
 
 void ForestMotion::setMovingWhereTouched() {
+    for (auto& a : awake_) a.onSoilOrStem = false;
     for (const auto& t : blockTouches_) awake(t.tree)->moving = true;
     for (const auto& t : stemTouches_)
-        if (!t.ignored) awake(t.treeA)->moving = awake(t.treeB)->moving = true;
-    for (const auto& t : soilTouches_) awake(t.tree)->moving = true;
+        if (!t.ignored) {
+            AwakeStem *a = awake(t.treeA), *b = awake(t.treeB);
+            a->moving = b->moving = a->onSoilOrStem = b->onSoilOrStem = true;
+        }
+    for (const auto& t : soilTouches_) {
+        AwakeStem* a = awake(t.tree);
+        a->moving = a->onSoilOrStem = true;
+    }
 }
 
 // A bent or broken stem can reach a neighbour the block never came near: wake the stems that
@@ -262,6 +269,8 @@ void ForestMotion::integrate(double dt) {
         }
         // lastBlockContact is set to the step's time at each touch: equal, the block touches it now.
         nodeSteps_[a.lastBlockContact == now_ ? StemAwake::Touched : a.heldBy] += a.stem.nodeCount();
+        if (a.broken) nodeSteps_.broken += a.stem.nodeCount();
+        if (a.onSoilOrStem) nodeSteps_.onSoilOrStem += a.stem.nodeCount();
         const double externalBefore = a.stem.ledger.externalWork;
         const StemEnergy e = stepper_.step(a.stem, dt, a.loads);
         // The stem's own budget without the work of the contact loads, which the contacts' springs

@@ -49,6 +49,8 @@ std::uint64_t NodeSteps::total() const {
 
 NodeSteps& NodeSteps::operator+=(const NodeSteps& other) {
     for (std::size_t i = 0; i < kStemAwakeReasons; ++i) byReason[i] += other.byReason[i];
+    broken += other.broken;
+    onSoilOrStem += other.onSoilOrStem;
     return *this;
 }
 

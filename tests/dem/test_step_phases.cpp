@@ -52,6 +52,13 @@ TEST(StepPhases, NodeStepsCountTheStemsWorkByWhatKeptItAwake) {
     EXPECT_GT(r.nodeSteps[StemAwake::Waiting], 0u);
     EXPECT_EQ(r.nodeSteps[StemAwake::Leaning], 0u);
     for (const std::uint64_t n : r.nodeSteps.byReason) EXPECT_EQ(n % nodes, 0u);
+    // The scene's 25 cm stem at 15 m/s breaks (its top snaps, docs/model-stems.md) and its pieces
+    // fall on the soil: both shares are counted, each within the total.
+    EXPECT_GT(r.nodeSteps.broken, 0u);
+    EXPECT_GT(r.nodeSteps.onSoilOrStem, 0u);
+    EXPECT_LE(r.nodeSteps.broken, r.nodeSteps.total());
+    EXPECT_LE(r.nodeSteps.onSoilOrStem, r.nodeSteps.total());
+    EXPECT_EQ(r.nodeSteps.broken % nodes, 0u);
     EXPECT_LE(r.nodeSteps.total(), static_cast<std::uint64_t>(r.steps) * nodes);
     const Scene bare(loadScene(std::string(SYLVAROCK_DATA) + "/scenes/no-forest.ini", {"stop.max_time_s=3"}));
     EXPECT_EQ(simulateBlock(bare, 0, 1).nodeSteps.total(), 0u);

@@ -69,6 +69,7 @@ private:
         // Checked against the soil since woken. A stem touching the soil moves, and one that does not
         // move keeps its nodes where they were checked: it needs no new check.
         bool soilChecked = false;
+        bool onSoilOrStem = false;  // touching the soil or another stem at the last detection
         // Its energy and its ledger's balance while it stands still: the same at every step until it moves.
         std::optional<double> standingBudget;
     };

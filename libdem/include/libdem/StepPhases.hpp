@@ -43,9 +43,11 @@ inline constexpr std::size_t kStemAwakeReasons = static_cast<std::size_t>(StemAw
 const char* name(StemAwake reason);
 
 // The stems' node-steps, the unit of a forested run's work (bench/bench_stem_step times one), by
-// what kept the stem awake.
+// what kept the stem awake; and, across those reasons, how many were steps of broken stems (a
+// connection broken or the root plate gone) and of stems on the soil or against a neighbour.
 struct NodeSteps {
     std::array<std::uint64_t, kStemAwakeReasons> byReason{};
+    std::uint64_t broken = 0, onSoilOrStem = 0;
     std::uint64_t& operator[](StemAwake r) { return byReason[static_cast<std::size_t>(r)]; }
     std::uint64_t operator[](StemAwake r) const { return byReason[static_cast<std::size_t>(r)]; }
     std::uint64_t total() const;

@@ -57,6 +57,7 @@ const std::vector<Knob> kKnobs = {
     {"stem.node_spacing_m", {"0.25", "1.0"}},
     {"forest.wake_margin_m", {"0.05", "0.3"}},
     {"forest.sleep_after_s", {"0.1", "1.0"}},
+    {"forest.return_horizon_s", {"0.05", "0.4"}},
 };
 
 // Every numerical knob at its fine end: the runs the others are compared with. The node spacing
@@ -65,6 +66,7 @@ const std::vector<Knob> kKnobs = {
 // resolution; its rows show that sensitivity against this reference (docs/accuracy.md).
 const std::vector<std::string> kReference = {
     "integration.safety=0.075", "integration.stem_safety=0.4", "forest.wake_margin_m=0.3", "forest.sleep_after_s=1.0",
+    "forest.return_horizon_s=0.4",
 };
 
 struct Setting {

@@ -175,6 +175,8 @@ void ForestMotion::detectStemStem() {
                 continue;
             }
             pair.checkedStill = true;
+        } else {
+            pair.checkedStill = false;  // what a check found before either moved no longer holds
         }
         if (A.stem.broken(ca) || B.stem.broken(cb)) continue;
         const Vec3 &a0 = A.stem.position[ca], &a1 = A.stem.position[ca + 1];
@@ -208,6 +210,12 @@ void ForestMotion::detectStemStem() {
 void ForestMotion::detectStemSoil() {
     soilTouches_.beginDetection();
     const double rs = soil_.radius();
+    for (auto& touch : soilTouches_)
+        if (!awake(touch.tree)->moving) {  // at rest on the soil: as it was, without motion
+            touch.touching = true;
+            touch.geometry.relativeVelocity.setZero();
+            touch.geometry.meanSpinNormal = 0;
+        }
     for (auto& a : awake_) {
         if (a.soilChecked && !a.moving) continue;
         a.soilChecked = true;

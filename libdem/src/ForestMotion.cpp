@@ -63,7 +63,7 @@ void ForestMotion::wake(std::uint32_t tree, double t) {
     const StableStep stability = stem.stability();
     const bool broken = falling(stem);
     // The all-awake reference steps every stem, standing or not.
-    awake_.push_back(AwakeStem{tree, std::move(stem), {}, stability, t, broken, cfg_.activity.allAwake, StemAwake::Waiting, {}, {}, false, false, std::nullopt});
+    awake_.push_back(AwakeStem{tree, std::move(stem), {}, stability, t, broken, cfg_.activity.allAwake, StemAwake::Waiting, {}, {}, false, false, -std::numeric_limits<double>::infinity(), std::nullopt});
     stemPairsStale_ = true;
 }
 
@@ -102,18 +102,20 @@ void ForestMotion::detect(const RigidBody& block, const std::vector<Vec3>& centr
     clock.lap(StepPhase::StemSoil);
 }
 
+// The block sets what it touches moving, and a moving stem what it touches; the soil, and a stem at
+// rest, do not: a stem resting on them stays at rest (sleeping bodies in contact, as in Jolt).
 void ForestMotion::setMovingWhereTouched() {
     for (auto& a : awake_) a.onSoilOrStem = false;
     for (const auto& t : blockTouches_) awake(t.tree)->moving = true;
     for (const auto& t : stemTouches_)
         if (!t.ignored) {
             AwakeStem *a = awake(t.treeA), *b = awake(t.treeB);
-            a->moving = b->moving = a->onSoilOrStem = b->onSoilOrStem = true;
+            if (a->moving || b->moving) a->moving = b->moving = true;
+            a->onSoilOrStem = b->onSoilOrStem = true;
         }
-    for (const auto& t : soilTouches_) {
-        AwakeStem* a = awake(t.tree);
-        a->moving = a->onSoilOrStem = true;
-    }
+    for (const auto& t : soilTouches_) awake(t.tree)->onSoilOrStem = true;
+    for (auto& a : awake_)
+        if (a.onSoilOrStem) a.lastOtherContact = now_;
 }
 
 // A bent or broken stem can reach a neighbour the block never came near: wake the stems that
@@ -290,6 +292,9 @@ void ForestMotion::sleep(const RigidBody& block, double t) {
     if (empty() || cfg_.activity.allAwake) return;
     for (std::size_t k = awake_.size(); k-- > 0;) {
         AwakeStem& a = awake_[k];
+        if (a.moving && a.lastBlockContact != now_ && !touchesMovingStem(a.tree) &&
+            activity_.mayRest(block, a.stem, a.lastOtherContact, t, cfg_.gravity))
+            rest(a);
         if (const auto held = activity_.holds(block, trees_.tree(a.tree), a.stem, a.broken, a.lastBlockContact, t)) {
             a.heldBy = *held;
             continue;
@@ -302,10 +307,8 @@ void ForestMotion::sleep(const RigidBody& block, double t) {
             continue;
         }
         impacts_.close(a.tree, block, a.stem);
+        rest(a);  // its vibration stops with it (the block is gone): booked, not lost silently
         Stem& s = a.stem;
-        // Its vibration stops with it (the block is gone); that energy is booked, not lost silently.
-        slept_.frozen += s.kineticEnergy();
-        for (std::size_t i = 0; i < s.nodeCount(); ++i) s.velocity[i].setZero(), s.angularVelocity[i].setZero();
         frozenElastic_ += s.elasticEnergy();
         frozenPotential_ += potentialEnergy(s, cfg_.gravity);
         slept_.addStem(s.ledger);
@@ -321,6 +324,26 @@ void ForestMotion::sleep(const RigidBody& block, double t) {
         awake_.erase(awake_.begin() + static_cast<std::ptrdiff_t>(k));
         stemPairsStale_ = true;
     }
+}
+
+// The stem stops where it stands, awake: its contacts stay, and the block, or a moving stem, sets it
+// moving again from rest. What it still moved with is booked as left vibrating.
+void ForestMotion::rest(AwakeStem& a) {
+    Stem& s = a.stem;
+    slept_.frozen += s.kineticEnergy();
+    for (std::size_t i = 0; i < s.nodeCount(); ++i) s.velocity[i].setZero(), s.angularVelocity[i].setZero();
+    a.moving = false;
+    a.standingBudget.reset();
+}
+
+bool ForestMotion::touchesMovingStem(std::uint32_t tree) const {
+    for (const auto& c : stemTouches_) {
+        if (c.ignored || (c.treeA != tree && c.treeB != tree)) continue;
+        const std::uint32_t other = c.treeA == tree ? c.treeB : c.treeA;
+        for (const auto& a : awake_)
+            if (a.tree == other && a.moving) return true;
+    }
+    return false;
 }
 
 std::vector<TreeImpact> ForestMotion::finish(const RigidBody& block) {

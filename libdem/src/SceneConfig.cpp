@@ -204,8 +204,9 @@ SceneKeys::SceneKeys(StemParameterSet set) : parameterSet(name(set)) {
     k.number("tree_contact.kappa_stem_stem", tc.kappaStemStem, ratio, "kappa_t-t");
     k.number("tree_contact.friction_stem_stem_deg", tc.frictionStemStemDeg, friction, "phi_t-t");
     k.number("forest.wake_margin_m", act.wakeMargin, closed(0, 100, "m"), "a stem is built when the block comes this close");
+    k.number("forest.return_horizon_s", act.returnHorizon, closed(0, 3600, "s"), "a stem the block has left stops where it stands once the block could not reach it within this time (single-tree.ini: 3600, never)");
     k.number("forest.sleep_after_s", act.sleepAfter, aboveUpTo(0, 3600, "s"), "a stem sleeps after this long without the block");
-    k.number("forest.piece_rest_speed_m_s", act.pieceRestSpeed, aboveUpTo(0, 100, "m/s"), "a broken stem sleeps only once all its nodes are slower than this");
+    k.number("forest.piece_rest_speed_m_s", act.pieceRestSpeed, aboveUpTo(0, 100, "m/s"), "a broken stem sleeps, and a stem lying on the soil or a neighbour rests, only once all its nodes are slower than this");
     k.number("forest.piece_max_time_s", act.pieceMaxTime, closed(0, 3600, "s"), "... or this long after the block's last contact (0: broken stems sleep as whole ones; single-tree.ini: 10)");
     k.other("forest.all_awake", act.allAwake, "reference mode: every stem awake from the start");
     auto& lm = c.lumped;

@@ -53,6 +53,31 @@ bool StemActivity::nodeReaches(const Vec3& node, double reach, const PlacedTree&
     return !(node.z() > other.foot.z() + other.geometry.height + reach);
 }
 
+bool StemActivity::blockCanReach(const RigidBody& block, const Stem& s, double gravity) const {
+    const double horizon = cfg_.returnHorizon;
+    // The block flies on under gravity over the horizon: its mean velocity then.
+    const Vec3 blockVelocity = block.velocity - Vec3(0, 0, 0.5 * gravity * horizon);
+    // A node stands for the half-connections on either side of it.
+    const double slack = block.boundingRadius() + cfg_.wakeMargin + 0.5 * s.connectionLength();
+    for (std::size_t i = 0; i < s.nodeCount(); ++i) {
+        const Vec3 d = s.position[i] - block.position;
+        const double distance = d.norm();
+        const double gap = distance - slack - 0.5 * s.diameterAt(s.restHeight(i));
+        if (gap <= 0) return true;
+        const double closing = blockVelocity.dot(d) / distance + s.velocity[i].norm();
+        if (gap < closing * horizon) return true;
+    }
+    return false;
+}
+
+bool StemActivity::mayRest(const RigidBody& block, const Stem& s, double lastOtherContact, double t, double gravity) const {
+    // A stem just out of a contact with the soil or a neighbour, and still moving, is far from any
+    // rest where it stands: stopped, it would be set moving again by that contact (and each such
+    // cycle found with energy from nowhere, docs/performance.md).
+    if (t - lastOtherContact < cfg_.sleepAfter && fastestNode(s) > cfg_.pieceRestSpeed) return false;
+    return !blockCanReach(block, s, gravity);
+}
+
 std::optional<StemAwake> StemActivity::holds(const RigidBody& block, const PlacedTree& tree, const Stem& s, bool broken,
                                              double lastBlockContact, double t) const {
     if (t - lastBlockContact < cfg_.sleepAfter) return StemAwake::Waiting;

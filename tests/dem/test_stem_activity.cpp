@@ -63,6 +63,57 @@ TEST(StemActivity, StemSleepsOnlyOnceTheBlockHasGoneAndItsPiecesRest) {
     EXPECT_EQ(activity.holds(gone, t, s, true, 0.0, 1.0), maySleep) << "pieces at rest";
 }
 
+// The block can reach a stem within the horizon H if it is within touching distance of a node (its
+// bounding radius, the margin and half a connection from the node's surface) or closes the gap in H:
+// its velocity towards the node (falling on under gravity) plus the node's speed, whichever way.
+TEST(StemActivity, BlockCanReachAStemItHeadsForWithinTheHorizon) {
+    ForestActivity cfg;
+    cfg.wakeMargin = 0.1;
+    cfg.returnHorizon = 0.1;
+    const StemActivity activity(cfg);
+    const PlacedTree t = tree20();
+    Stem s(t.geometry, StemParams{}, t.foot, t.support);
+    const double g = 9.81, l = s.connectionLength();
+    // The block level with node 1, beside it (+x): gap = x - (0.5 + 0.1 + l / 2) - r_1.
+    const double z = s.restHeight(1), r = 0.5 * s.diameterAt(z);
+    const double touching = 0.5 + 0.1 + 0.5 * l + r;
+    EXPECT_TRUE(activity.blockCanReach(ball(Vec3(touching - 0.01, 0, z)), s, g)) << "within touching distance";
+    // Coming back at 5 m/s: 0.5 m in 0.1 s (gravity pulls it down, across the line to node 1 only).
+    RigidBody back = ball(Vec3(touching + 0.45, 0, z));
+    back.velocity = Vec3(-5, 0, 0);
+    EXPECT_TRUE(activity.blockCanReach(back, s, g));
+    back.position.x() = touching + 0.55;
+    EXPECT_FALSE(activity.blockCanReach(back, s, g));
+    // Going away at 5 m/s, just out of touching distance: it cannot.
+    RigidBody away = ball(Vec3(touching + 0.01, 0, z));
+    away.velocity = Vec3(5, 0, 0);
+    EXPECT_FALSE(activity.blockCanReach(away, s, g));
+    // ... unless a node swings towards it faster: node 1 at 6 m/s closes 0.1 m net in 0.1 s.
+    s.velocity[1] = Vec3(6, 0, 0);
+    EXPECT_TRUE(activity.blockCanReach(away, s, g));
+}
+
+// A stem the block cannot reach may stop where it stands if it has swung free of everything for
+// sleep_after_s, whatever its speed, or lies still on what it touches; not if it has just left a
+// contact at speed (stopped there, the contact would set it moving again and again).
+TEST(StemActivity, StemRestsWhereItStandsOnlyFreeOfContactsOrStill) {
+    ForestActivity cfg;
+    cfg.sleepAfter = 0.3;
+    cfg.pieceRestSpeed = 0.2;
+    cfg.returnHorizon = 0.1;
+    const StemActivity activity(cfg);
+    const PlacedTree t = tree20();
+    Stem s(t.geometry, StemParams{}, t.foot, t.support);
+    const double g = 9.81;
+    const RigidBody gone = ball(Vec3(20, 0, 0.5)), near = ball(Vec3(0.9, 0, 0.5));  // both at rest
+    s.velocity.back() = Vec3(2, 0, 0);  // its top swings
+    EXPECT_TRUE(activity.mayRest(gone, s, 0.0, 1.0, g)) << "free of contacts for 1 s";
+    EXPECT_FALSE(activity.mayRest(gone, s, 0.9, 1.0, g)) << "left a contact 0.1 s ago at 2 m/s";
+    EXPECT_FALSE(activity.mayRest(near, s, 0.0, 1.0, g)) << "the block can reach it";
+    s.velocity.back() = Vec3(0.1, 0, 0);
+    EXPECT_TRUE(activity.mayRest(gone, s, 1.0, 1.0, g)) << "lying still on what it touches";
+}
+
 TEST(StemActivity, DisplacedNodeWakesTheNeighboursItCanTouch) {
     ForestActivity cfg;
     cfg.wakeMargin = 0.1;

@@ -3,8 +3,10 @@
 // then a stem is built into the simulation (woken), integrated while the block can touch it, and
 // put back to sleep once the block has left it (its deformed or broken shape is kept). A woken
 // stem stands in static equilibrium (Stem::carryOwnWeight) and is only stepped once something
-// touches it: the stiff stem time step is paid only while stems move. When a stem wakes and when
-// it may sleep is StemActivity's; what waking and sleeping do to the run's energy and contacts is here.
+// touches it: the stiff stem time step is paid only while stems move. A moving stem the block cannot
+// reach any more stops where it stands (rests), awake and in its contacts, until the block or a
+// moving stem touches it again. When a stem wakes, rests and may sleep is StemActivity's; what
+// waking, resting and sleeping do to the run's energy and contacts is here.
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <optional>
@@ -41,7 +43,8 @@ public:
     void forces(const RigidBody& block, double dt, Vec3& force, Vec3& torque);
     // Advances the awake stems by dt (connections, root springs, gravity, contact loads).
     void integrate(double dt);
-    // Puts to sleep the stems the block has left; closes their impact records.
+    // Rests the moving stems the block cannot reach within forest.return_horizon_s; puts to sleep
+    // the stems the block has left, closing their impact records.
     void sleep(const RigidBody& block, double t);
     // Closes every open impact record and returns all of them, in the order they began.
     std::vector<TreeImpact> finish(const RigidBody& block);
@@ -61,15 +64,17 @@ private:
         StableStep stability;  // its own springs' (Stem::stability)
         double lastBlockContact;  // time of the last block contact (or of waking)
         bool broken;              // some connection broken or the root plate gone: its pieces fall
-        bool moving;              // touched since woken; until then it stands still, is not stepped
-                                  // and does not limit the time step
+        bool moving;              // stepped: set by a touch of the block or of a moving stem, cleared
+                                  // when it rests; until then it stands still, is not stepped and
+                                  // does not limit the time step
         StemAwake heldBy;         // what kept it awake at the last sleep check, once the block left it
         mutable std::vector<StableStep> contactBounds;  // per node, from the contacts' springs and dashpots (stableStep)
         std::vector<Vec3> listedAt;  // node positions when stemPairs_ was made
-        // Checked against the soil since woken. A stem touching the soil moves, and one that does not
-        // move keeps its nodes where they were checked: it needs no new check.
+        // Checked against the soil since woken. A stem that does not move keeps its nodes where they
+        // were checked, and its contacts with the soil as they were: it needs no new check.
         bool soilChecked = false;
         bool onSoilOrStem = false;  // touching the soil or another stem at the last detection
+        double lastOtherContact;    // time of the last detection that found it so
         // Its energy and its ledger's balance while it stands still: the same at every step until it moves.
         std::optional<double> standingBudget;
     };
@@ -115,6 +120,8 @@ private:
     void detectStemStem();
     void detectStemSoil();
     void setMovingWhereTouched();
+    void rest(AwakeStem& a);
+    bool touchesMovingStem(std::uint32_t tree) const;
     static Vec3 connectionVelocity(const Stem& s, std::size_t c, double t, const Vec3& point);
     static void applyToConnection(AwakeStem& a, std::size_t c, double t, const Vec3& point, const Vec3& force);
 

@@ -64,9 +64,10 @@ struct StopConfig {
     double maxTime = 300;       // s of simulated time
 };
 
-// When a stem is built into the simulation and when it is put back to sleep (BlockMotion).
+// When a stem is built into the simulation, when it rests and when it is put back to sleep (BlockMotion).
 struct ForestActivity {
     double wakeMargin = 0.1;    // m: a stem wakes when the block's bounding sphere comes this close (plus one step's travel)
+    double returnHorizon = 0.1;  // s: a moving stem the block cannot reach within this time stops where it stands
     double sleepAfter = 0.3;    // s without block contact, the block out of reach, before a stem sleeps again
     // A broken stem's pieces fall on: it sleeps only once every node is slower than this, m/s,
     double pieceRestSpeed = 0.2;

@@ -40,6 +40,17 @@ public:
     std::optional<StemAwake> holds(const RigidBody& block, const PlacedTree& tree, const Stem& s, bool broken,
                                    double lastBlockContact, double t) const;
 
+    // The block could reach one of this stem's nodes within forest.return_horizon_s: it is within
+    // touching distance (its bounding sphere, the wake margin and half a connection from the node's
+    // surface), or the gap closes in that time at the block's approach speed (its velocity, flying on
+    // under gravity, towards the node) plus the node's speed in any direction.
+    bool blockCanReach(const RigidBody& block, const Stem& s, double gravity) const;
+    // A moving stem the block has left may stop where it stands (stay awake, no longer stepped):
+    // the block cannot reach it within the horizon, and it has either swung free of the soil and of
+    // other stems for sleep_after_s (`lastOtherContact`) or lies still on them (every node slower
+    // than piece_rest_speed_m_s). Whether a moving neighbour touches it is the caller's to check.
+    bool mayRest(const RigidBody& block, const Stem& s, double lastOtherContact, double t, double gravity) const;
+
 private:
     const ForestActivity& cfg_;
 };

@@ -12,6 +12,12 @@ namespace {
 // A 20 cm beech at the origin, on flat ground at z = 0.
 PlacedTree tree20() { return PlacedTree{1, Vec3::Zero(), beechStem(20), StemFoot::RootSpring}; }
 
+// That beech built, standing still.
+Stem stem20() {
+    const PlacedTree t = tree20();
+    return Stem(t.geometry, StemParams{}, t.foot, t.support);
+}
+
 // A single sphere of 0.5 m radius: its bounding radius is 0.5 m.
 RigidBody ball(const Vec3& at) {
     RigidBody b(1000, Vec3(100, 100, 100), {ClumpSphere{Vec3::Zero(), 0.5}});
@@ -71,8 +77,7 @@ TEST(StemActivity, BlockCanReachAStemItHeadsForWithinTheHorizon) {
     cfg.wakeMargin = 0.1;
     cfg.returnHorizon = 0.1;
     const StemActivity activity(cfg);
-    const PlacedTree t = tree20();
-    Stem s(t.geometry, StemParams{}, t.foot, t.support);
+    Stem s = stem20();
     const double g = 9.81, l = s.connectionLength();
     // The block level with node 1, beside it (+x): gap = x - (0.5 + 0.1 + l / 2) - r_1.
     const double z = s.restHeight(1), r = 0.5 * s.diameterAt(z);
@@ -102,8 +107,7 @@ TEST(StemActivity, StemRestsWhereItStandsOnlyFreeOfContactsOrStill) {
     cfg.pieceRestSpeed = 0.2;
     cfg.returnHorizon = 0.1;
     const StemActivity activity(cfg);
-    const PlacedTree t = tree20();
-    Stem s(t.geometry, StemParams{}, t.foot, t.support);
+    Stem s = stem20();
     const double g = 9.81;
     const RigidBody gone = ball(Vec3(20, 0, 0.5)), near = ball(Vec3(0.9, 0, 0.5));  // both at rest
     s.velocity.back() = Vec3(2, 0, 0);  // its top swings

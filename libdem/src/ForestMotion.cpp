@@ -288,22 +288,40 @@ void ForestMotion::integrate(double dt) {
                slept_.bendingDamping + slept_.axialDamping + slept_.rootPlasticity + slept_.rupture - slept_.unloadingGain - injected_;
 }
 
+// Stems that touch one another form an island (Islands.hpp): its moving stems rest together, and it
+// sleeps as a whole. Stem by stem, a stem touching a moving neighbour could not rest, nor one touching
+// any awake neighbour sleep: two broken stems rolling down the slope against each other, or leaning
+// on each other, were stepped to the end of the run (docs/performance.md, "Islands").
 void ForestMotion::sleep(const RigidBody& block, double t) {
     if (empty() || cfg_.activity.allAwake) return;
-    for (std::size_t k = awake_.size(); k-- > 0;) {
+    const std::size_t n = awake_.size();
+    islands_.reset(n);
+    const auto index = [this](std::uint32_t tree) { return static_cast<std::size_t>(awake(tree) - awake_.data()); };
+    for (const auto& c : stemTouches_)
+        if (!c.ignored) islands_.join(index(c.treeA), index(c.treeB));  // ignored: fused at rest, no force
+
+    // Rest: every moving stem of the island may (the block does not touch it now, StemActivity::mayRest).
+    std::vector<bool> may(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const AwakeStem& a = awake_[i];
+        may[i] = !a.moving || (a.lastBlockContact != now_ && activity_.mayRest(block, a.stem, a.lastOtherContact, t, cfg_.gravity));
+    }
+    const std::vector<bool> rests = islands_.whole(may);
+    for (std::size_t i = 0; i < n; ++i)
+        if (awake_[i].moving && rests[i]) rest(awake_[i]);
+
+    // Sleep: nothing holds any stem of the island (StemActivity::holds); the others lean on the held ones.
+    std::vector<std::optional<StemAwake>> held(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const AwakeStem& a = awake_[i];
+        held[i] = activity_.holds(block, trees_.tree(a.tree), a.stem, a.broken, a.lastBlockContact, t);
+        may[i] = !held[i];
+    }
+    const std::vector<bool> sleeps = islands_.whole(may);
+    for (std::size_t k = n; k-- > 0;) {
         AwakeStem& a = awake_[k];
-        if (a.moving && a.lastBlockContact != now_ && !touchesMovingStem(a.tree) &&
-            activity_.mayRest(block, a.stem, a.lastOtherContact, t, cfg_.gravity))
-            rest(a);
-        if (const auto held = activity_.holds(block, trees_.tree(a.tree), a.stem, a.broken, a.lastBlockContact, t)) {
-            a.heldBy = *held;
-            continue;
-        }
-        bool leaning = false;  // on an awake neighbour
-        for (const auto& st : stemTouches_)
-            if (!st.ignored && (st.treeA == a.tree || st.treeB == a.tree)) leaning = true;
-        if (leaning) {
-            a.heldBy = StemAwake::Leaning;
+        if (!sleeps[k]) {
+            a.heldBy = held[k] ? *held[k] : StemAwake::Leaning;
             continue;
         }
         impacts_.close(a.tree, block, a.stem);
@@ -334,16 +352,6 @@ void ForestMotion::rest(AwakeStem& a) {
     for (std::size_t i = 0; i < s.nodeCount(); ++i) s.velocity[i].setZero(), s.angularVelocity[i].setZero();
     a.moving = false;
     a.standingBudget.reset();
-}
-
-bool ForestMotion::touchesMovingStem(std::uint32_t tree) const {
-    for (const auto& c : stemTouches_) {
-        if (c.ignored || (c.treeA != tree && c.treeB != tree)) continue;
-        const std::uint32_t other = c.treeA == tree ? c.treeB : c.treeA;
-        for (const auto& a : awake_)
-            if (a.tree == other && a.moving) return true;
-    }
-    return false;
 }
 
 std::vector<TreeImpact> ForestMotion::finish(const RigidBody& block) {

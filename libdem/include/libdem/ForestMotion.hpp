@@ -17,6 +17,7 @@
 #include "libdem/ContactSet.hpp"
 #include "libdem/ForestLedger.hpp"
 #include "libdem/ImpactRecorder.hpp"
+#include "libdem/Islands.hpp"
 #include "libdem/StableStep.hpp"
 #include "libdem/StemActivity.hpp"
 #include "libdem/StemStepper.hpp"
@@ -44,7 +45,7 @@ public:
     // Advances the awake stems by dt (connections, root springs, gravity, contact loads).
     void integrate(double dt);
     // Rests the moving stems the block cannot reach within forest.return_horizon_s; puts to sleep
-    // the stems the block has left, closing their impact records.
+    // the stems the block has left, closing their impact records; stems in contact do either together.
     void sleep(const RigidBody& block, double t);
     // Closes every open impact record and returns all of them, in the order they began.
     std::vector<TreeImpact> finish(const RigidBody& block);
@@ -121,7 +122,6 @@ private:
     void detectStemSoil();
     void setMovingWhereTouched();
     void rest(AwakeStem& a);
-    bool touchesMovingStem(std::uint32_t tree) const;
     static Vec3 connectionVelocity(const Stem& s, std::size_t c, double t, const Vec3& point);
     static void applyToConnection(AwakeStem& a, std::size_t c, double t, const Vec3& point, const Vec3& force);
 
@@ -143,6 +143,7 @@ private:
     std::vector<Eigen::AlignedBox3d> boxes_;  // per awake stem (listStemPairs)
     std::vector<ConnectionPair> stemPairs_;
     bool stemPairsStale_ = true;
+    Islands islands_;  // of the awake stems, by stem/stem contact (sleep)
     static constexpr double kStemPairSkin = 0.05;  // m
     DissipationLedger contactLedger_;
     ForestLedger slept_;        // ledgers of stems that went to sleep

@@ -1,0 +1,43 @@
+// Stems in contact rest and sleep as one island (Islands.hpp, ForestMotion::sleep): one that may not
+// keeps every stem it touches, directly or through others, and nothing else.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "libdem/Islands.hpp"
+
+using namespace sylva::dem;
+
+// Five stems: 0-1-2 in a chain of contacts, 3 alone, 4 alone.
+Islands chainOfThreeAndTwoAlone() {
+    Islands islands;
+    islands.reset(5);
+    islands.join(0, 1);
+    islands.join(2, 1);
+    return islands;
+}
+
+TEST(Islands, TouchingStemsShareAnIslandAndOthersDoNot) {
+    Islands islands = chainOfThreeAndTwoAlone();
+    EXPECT_EQ(islands.root(0), islands.root(2));  // through stem 1
+    EXPECT_NE(islands.root(0), islands.root(3));
+    EXPECT_NE(islands.root(3), islands.root(4));
+    for (std::size_t i = 0; i < 5; ++i) EXPECT_LT(islands.root(i), 5u);
+}
+
+// Two stems leaning on each other, both free to go: they go together. Each asking only whether its
+// neighbour had gone kept both stepped for ever (docs/performance.md, "Islands").
+TEST(Islands, StemsThatMayAllGoTogether) {
+    Islands islands;
+    islands.reset(2);
+    islands.join(0, 1);
+    EXPECT_EQ(islands.whole({true, true}), (std::vector<bool>{true, true}));
+}
+
+// One stem that may not (the block touches it, or it is held) keeps its whole island, at the far end
+// of a chain too, and no other island.
+TEST(Islands, OneStemThatMayNotKeepsItsWholeIslandOnly) {
+    Islands islands = chainOfThreeAndTwoAlone();
+    EXPECT_EQ(islands.whole({true, true, false, true, false}), (std::vector<bool>{false, false, false, true, false}));
+    EXPECT_EQ(islands.whole({true, true, true, true, true}), std::vector<bool>(5, true));
+}

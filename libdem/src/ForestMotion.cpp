@@ -300,28 +300,31 @@ void ForestMotion::sleep(const RigidBody& block, double t) {
     for (const auto& c : stemTouches_)
         if (!c.ignored) islands_.join(index(c.treeA), index(c.treeB));  // ignored: fused at rest, no force
 
-    // Rest: every moving stem of the island may (the block does not touch it now, StemActivity::mayRest).
-    std::vector<bool> may(n);
+    // Rest: no moving stem of the island is touched by the block now, and each may rest
+    // (StemActivity::mayRest, the costlier test, asked only while its island still may).
+    islands_.allowAll();
+    for (std::size_t i = 0; i < n; ++i)
+        if (awake_[i].moving && awake_[i].lastBlockContact == now_) islands_.forbid(i);
     for (std::size_t i = 0; i < n; ++i) {
         const AwakeStem& a = awake_[i];
-        may[i] = !a.moving || (a.lastBlockContact != now_ && activity_.mayRest(block, a.stem, a.lastOtherContact, t, cfg_.gravity));
+        if (a.moving && islands_.allowed(i) && !activity_.mayRest(block, a.stem, a.lastOtherContact, t, cfg_.gravity))
+            islands_.forbid(i);
     }
-    const std::vector<bool> rests = islands_.whole(may);
     for (std::size_t i = 0; i < n; ++i)
-        if (awake_[i].moving && rests[i]) rest(awake_[i]);
+        if (awake_[i].moving && islands_.allowed(i)) rest(awake_[i]);
 
     // Sleep: nothing holds any stem of the island (StemActivity::holds); the others lean on the held ones.
-    std::vector<std::optional<StemAwake>> held(n);
+    islands_.allowAll();
+    held_.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
         const AwakeStem& a = awake_[i];
-        held[i] = activity_.holds(block, trees_.tree(a.tree), a.stem, a.broken, a.lastBlockContact, t);
-        may[i] = !held[i];
+        held_[i] = activity_.holds(block, trees_.tree(a.tree), a.stem, a.broken, a.lastBlockContact, t);
+        if (held_[i]) islands_.forbid(i);
     }
-    const std::vector<bool> sleeps = islands_.whole(may);
     for (std::size_t k = n; k-- > 0;) {
         AwakeStem& a = awake_[k];
-        if (!sleeps[k]) {
-            a.heldBy = held[k] ? *held[k] : StemAwake::Leaning;
+        if (!islands_.allowed(k)) {
+            a.heldBy = held_[k] ? *held_[k] : StemAwake::Leaning;
             continue;
         }
         impacts_.close(a.tree, block, a.stem);

@@ -36,7 +36,7 @@ const char* name(StemAwake reason) {
         case StemAwake::Waiting: return "waiting (forest.sleep_after_s)";
         case StemAwake::BlockNear: return "block within reach";
         case StemAwake::PiecesFalling: return "pieces falling";
-        case StemAwake::Leaning: return "touching an awake stem";
+        case StemAwake::Leaning: return "touching a stem held awake";
     }
     return "?";
 }

@@ -8,6 +8,8 @@
 
 using namespace sylva::dem;
 
+namespace {
+
 // Five stems: 0-1-2 in a chain of contacts, 3 alone, 4 alone.
 Islands chainOfThreeAndTwoAlone() {
     Islands islands;
@@ -16,6 +18,14 @@ Islands chainOfThreeAndTwoAlone() {
     islands.join(2, 1);
     return islands;
 }
+
+std::vector<bool> allowed(Islands& islands, std::size_t n) {
+    std::vector<bool> out;
+    for (std::size_t i = 0; i < n; ++i) out.push_back(islands.allowed(i));
+    return out;
+}
+
+}  // namespace
 
 TEST(Islands, TouchingStemsShareAnIslandAndOthersDoNot) {
     Islands islands = chainOfThreeAndTwoAlone();
@@ -31,13 +41,18 @@ TEST(Islands, StemsThatMayAllGoTogether) {
     Islands islands;
     islands.reset(2);
     islands.join(0, 1);
-    EXPECT_EQ(islands.whole({true, true}), (std::vector<bool>{true, true}));
+    islands.allowAll();
+    EXPECT_EQ(allowed(islands, 2), (std::vector<bool>{true, true}));
 }
 
 // One stem that may not (the block touches it, or it is held) keeps its whole island, at the far end
-// of a chain too, and no other island.
+// of a chain too, and no other island; allowing all again starts afresh.
 TEST(Islands, OneStemThatMayNotKeepsItsWholeIslandOnly) {
     Islands islands = chainOfThreeAndTwoAlone();
-    EXPECT_EQ(islands.whole({true, true, false, true, false}), (std::vector<bool>{false, false, false, true, false}));
-    EXPECT_EQ(islands.whole({true, true, true, true, true}), std::vector<bool>(5, true));
+    islands.allowAll();
+    islands.forbid(2);
+    islands.forbid(4);
+    EXPECT_EQ(allowed(islands, 5), (std::vector<bool>{false, false, false, true, false}));
+    islands.allowAll();
+    EXPECT_EQ(allowed(islands, 5), std::vector<bool>(5, true));
 }

@@ -5,8 +5,9 @@
 // stem stands in static equilibrium (Stem::carryOwnWeight) and is only stepped once something
 // touches it: the stiff stem time step is paid only while stems move. A moving stem the block cannot
 // reach any more stops where it stands (rests), awake and in its contacts, until the block or a
-// moving stem touches it again. When a stem wakes, rests and may sleep is StemActivity's; what
-// waking, resting and sleeping do to the run's energy and contacts is here.
+// moving stem touches it again; stems touching one another rest and sleep together (Islands). When a
+// stem wakes, rests and may sleep is StemActivity's; what waking, resting and sleeping do to the
+// run's energy and contacts is here.
 #include <Eigen/Geometry>
 #include <cstdint>
 #include <optional>
@@ -144,6 +145,7 @@ private:
     std::vector<ConnectionPair> stemPairs_;
     bool stemPairsStale_ = true;
     Islands islands_;  // of the awake stems, by stem/stem contact (sleep)
+    std::vector<std::optional<StemAwake>> held_;  // per awake stem: what holds it (StemActivity::holds)
     static constexpr double kStemPairSkin = 0.05;  // m
     DissipationLedger contactLedger_;
     ForestLedger slept_;        // ledgers of stems that went to sleep

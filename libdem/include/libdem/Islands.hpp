@@ -20,18 +20,14 @@ public:
         while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
         return i;
     }
-    // Per body: whether every body of its island `may` (rest, sleep): an island goes as a whole.
-    std::vector<bool> whole(const std::vector<bool>& may) {
-        const std::size_t n = parent_.size();
-        std::vector<bool> islandMay(n, true), out(n);
-        for (std::size_t i = 0; i < n; ++i)
-            if (!may[i]) islandMay[root(i)] = false;
-        for (std::size_t i = 0; i < n; ++i) out[i] = islandMay[root(i)];
-        return out;
-    }
+    // An island goes (rests, sleeps) as a whole: allowed until any of its bodies forbids it.
+    void allowAll() { islandMay_.assign(parent_.size(), true); }
+    void forbid(std::size_t i) { islandMay_[root(i)] = false; }
+    bool allowed(std::size_t i) { return islandMay_[root(i)]; }
 
 private:
     std::vector<std::size_t> parent_;
+    std::vector<bool> islandMay_;  // per root
 };
 
 }  // namespace sylva::dem

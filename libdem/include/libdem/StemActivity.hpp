@@ -36,7 +36,7 @@ public:
     // What keeps a stem the block touched last at `lastBlockContact` from going back to sleep at t
     // (Waiting: not `sleepAfter` yet; BlockNear: the block within reach of its foot;
     // PiecesFalling: broken, a piece still moving within `pieceMaxTime`), or nullopt: it may sleep.
-    // Whether an awake neighbour leans on it is the caller's to check.
+    // The stems it touches are the caller's to check (an island sleeps as a whole: ForestMotion::sleep).
     std::optional<StemAwake> holds(const RigidBody& block, const PlacedTree& tree, const Stem& s, bool broken,
                                    double lastBlockContact, double t) const;
 
@@ -48,7 +48,7 @@ public:
     // A moving stem the block has left may stop where it stands (stay awake, no longer stepped):
     // the block cannot reach it within the horizon, and it has either swung free of the soil and of
     // other stems for sleep_after_s (`lastOtherContact`) or lies still on them (every node slower
-    // than piece_rest_speed_m_s). Whether a moving neighbour touches it is the caller's to check.
+    // than piece_rest_speed_m_s). The stems it touches are the caller's (an island rests as a whole).
     bool mayRest(const RigidBody& block, const Stem& s, double lastOtherContact, double t, double gravity) const;
 
 private:

@@ -37,8 +37,8 @@ struct PhaseTimes {
 
 // Why an awake stem is stepped: the block touches it, or, once the block has left it and while the
 // block can still reach it (or it has not come to rest: StemActivity::mayRest), what keeps it from
-// sleeping (StemActivity::holds; Leaning is ForestMotion's: an awake neighbour touches it). The
-// all-awake reference, whose stems never sleep, counts them as Waiting.
+// sleeping (StemActivity::holds; Leaning is ForestMotion's: a stem it touches, directly or through
+// others, is held). The all-awake reference, whose stems never sleep, counts them as Waiting.
 enum class StemAwake { Touched, Waiting, BlockNear, PiecesFalling, Leaning };
 inline constexpr std::size_t kStemAwakeReasons = static_cast<std::size_t>(StemAwake::Leaning) + 1;  // the last one
 const char* name(StemAwake reason);

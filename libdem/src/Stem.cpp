@@ -146,8 +146,9 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         // Relative rotation of b with respect to a. Its components are the same in a's frame, b's
         // frame and the frame halfway between them, which is the connection's frame.
         const Vec3 theta = rotationVector(orientation[a].conjugate() * orientation[b]);
-        const Quat frame = orientation[a] * fromRotationVector(0.5 * theta);
-        const Vec3 chord = frame.conjugate() * (position[b] - position[a]);  // in the connection frame
+        // As a matrix: it turns four vectors, each a matrix product where a quaternion's costs twice that.
+        const Eigen::Matrix3d frame = (orientation[a] * fromRotationVector(0.5 * theta)).toRotationMatrix();
+        const Vec3 chord = frame.transpose() * (position[b] - position[a]);  // in the connection frame
         const Vec3 stretch = chord - Vec3(0, 0, length_ + k.weightCompression);  // shear x, y; axial z
         // The axial dashpot's work over the step just made, booked now that its stretch is known:
         // its force times the stretch it resisted (exact, as the laws' work is; the rate the force
@@ -187,7 +188,7 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         // R_a J^-T, so they are summed before it.
         const Vec2 shear = k.bending.shearForce();
         // Wood's internal friction in the axial spring: a dashpot along it, at the nodes' mid-step velocities.
-        k.dashpotForce = k.axialDamping * (velocity[b] - velocity[a]).dot(frame * Vec3::UnitZ());
+        k.dashpotForce = k.axialDamping * (velocity[b] - velocity[a]).dot(frame.col(2));
         const Vec3 springs(shear.x(), shear.y(), k.axial * stretch.z() + k.dashpotForce);
         const Vec3 turn = chord.cross(springs);
         const Vec3 couple =

@@ -124,16 +124,28 @@ void ForestMotion::listStemPairs() {
         const double r = 0.5 * a.stem.diameterAt(0) + 0.5 * kStemPairSkin;
         boxes_[k] = Eigen::AlignedBox3d(box.min() - Vec3::Constant(r), box.max() + Vec3::Constant(r));
     }
+    // A connection within reach of the other stem's connection lies, widened by its own radius and half
+    // the skin, in the other stem's box: only those are paired (two crossing stems share a few).
+    const auto inBox = [](const Stem& s, const Eigen::AlignedBox3d& other, std::vector<std::size_t>& out) {
+        out.clear();
+        for (std::size_t c = 0; c < s.connectionCount(); ++c) {
+            if (s.broken(c)) continue;
+            const double r = 0.5 * s.connectionDiameter(c) + 0.5 * kStemPairSkin;
+            const Eigen::AlignedBox3d box(s.position[c].cwiseMin(s.position[c + 1]) - Vec3::Constant(r),
+                                          s.position[c].cwiseMax(s.position[c + 1]) + Vec3::Constant(r));
+            if (box.intersects(other)) out.push_back(c);
+        }
+    };
     for (std::size_t ia = 0; ia < awake_.size(); ++ia)
         for (std::size_t ib = ia + 1; ib < awake_.size(); ++ib) {
             if (!boxes_[ia].intersects(boxes_[ib])) continue;
             const Stem& A = awake_[ia].stem;
             const Stem& B = awake_[ib].stem;
-            for (std::size_t ca = 0; ca < A.connectionCount(); ++ca) {
-                if (A.broken(ca)) continue;
+            inBox(A, boxes_[ib], nearA_);
+            inBox(B, boxes_[ia], nearB_);
+            for (const std::size_t ca : nearA_) {
                 const Vec3 &a0 = A.position[ca], &a1 = A.position[ca + 1];
-                for (std::size_t cb = 0; cb < B.connectionCount(); ++cb) {
-                    if (B.broken(cb)) continue;
+                for (const std::size_t cb : nearB_) {
                     const Vec3 &b0 = B.position[cb], &b1 = B.position[cb + 1];
                     const double near = 0.5 * (A.connectionDiameter(ca) + B.connectionDiameter(cb)) + kStemPairSkin;
                     // Cheap rejection on the segments' midpoints before the exact closest points.

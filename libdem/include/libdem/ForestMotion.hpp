@@ -142,6 +142,7 @@ private:
     ImpactRecorder impacts_;
     std::vector<std::uint32_t> nearTrees_, nearSoil_, toWake_;
     std::vector<Eigen::AlignedBox3d> boxes_;  // per awake stem (listStemPairs)
+    std::vector<std::size_t> nearA_, nearB_;  // a pair's connections inside the other stem's box (listStemPairs)
     std::vector<ConnectionPair> stemPairs_;
     bool stemPairsStale_ = true;
     Islands islands_;  // of the awake stems, by stem/stem contact (sleep)

@@ -53,6 +53,13 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
     const Vec3 omega = block.angularVelocity();
     for (auto& a : awake_) {
         const Stem& s = a.stem;
+        // No connection of a stem whose nodes' box, widened by its thickest radius, is out of the
+        // block's reach can be within it (the test below, connection by connection).
+        Eigen::AlignedBox3d box;
+        for (const Vec3& p : s.position) box.extend(p);
+        const Vec3 widest = Vec3::Constant(0.5 * s.diameterAt(0));
+        const Eigen::AlignedBox3d widened(box.min() - widest, box.max() + widest);
+        if (widened.exteriorDistance(block.position) > block.boundingRadius() + approach) continue;
         std::uint32_t piece = 0;  // pieces of a broken stem move apart: each has its own contacts
         for (std::size_t c = 0; c < s.connectionCount(); ++c) {
             if (s.broken(c)) {

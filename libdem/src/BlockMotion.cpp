@@ -215,9 +215,11 @@ void BlockMotion::audit(const Vec3& force, const Vec3& torque, double dt, double
 }
 
 double BlockMotion::clearance() const {
+    // Only the spheres' heights: the rotation's last row against each offset, not each centre turned.
+    const Vec3 up = block_.orientation.toRotationMatrix().row(2).transpose();
     double lowest = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < block_.spheres().size(); ++i)
-        lowest = std::min(lowest, block_.sphereCentre(i).z() - block_.spheres()[i].radius);
+    for (const ClumpSphere& s : block_.spheres()) lowest = std::min(lowest, up.dot(s.offset) - s.radius);
+    lowest += block_.position.z();
     return std::max(0.0, lowest - soil_.surfaceHeight(block_.position.x(), block_.position.y()));
 }
 

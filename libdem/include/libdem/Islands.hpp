@@ -1,7 +1,7 @@
 #pragma once
 // Bodies that touch one another, grouped into islands (union-find with path halving): stems in contact
 // rest and sleep together or not at all, as touching bodies do in Box2D's and Jolt's island sleeping.
-// Reset once per use; at the forest's sizes (tens of awake stems) it costs less than one node-step.
+// ForestMotion::sleep builds them afresh at every step, from that step's stem/stem contacts.
 #include <cstddef>
 #include <vector>
 

@@ -14,6 +14,15 @@ namespace sylva::dem {
 
 namespace {
 
+// The box around a stem's nodes, widened by its thickest radius (at its foot) and `margin`: every
+// connection's surface, and `margin` around it, lies inside.
+Eigen::AlignedBox3d widenedNodeBox(const Stem& s, double margin) {
+    Eigen::AlignedBox3d box;
+    for (const Vec3& p : s.position) box.extend(p);
+    const Vec3 widen = Vec3::Constant(0.5 * s.diameterAt(0) + margin);
+    return Eigen::AlignedBox3d(box.min() - widen, box.max() + widen);
+}
+
 // History of a contact first seen at this overlap. Stems are checked against each other only
 // while awake, so a stem can be woken into a neighbour that already bent into it; the part of the
 // overlap no step's motion could explain (kMaxOnsetOverlap) becomes an offset the spring starts from.
@@ -55,11 +64,7 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
         const Stem& s = a.stem;
         // No connection of a stem whose nodes' box, widened by its thickest radius, is out of the
         // block's reach can be within it (the test below, connection by connection).
-        Eigen::AlignedBox3d box;
-        for (const Vec3& p : s.position) box.extend(p);
-        const Vec3 widest = Vec3::Constant(0.5 * s.diameterAt(0));
-        const Eigen::AlignedBox3d widened(box.min() - widest, box.max() + widest);
-        if (widened.exteriorDistance(block.position) > block.boundingRadius() + approach) continue;
+        if (widenedNodeBox(s, 0).exteriorDistance(block.position) > block.boundingRadius() + approach) continue;
         std::uint32_t piece = 0;  // pieces of a broken stem move apart: each has its own contacts
         for (std::size_t c = 0; c < s.connectionCount(); ++c) {
             if (s.broken(c)) {
@@ -126,10 +131,7 @@ void ForestMotion::listStemPairs() {
     for (std::size_t k = 0; k < awake_.size(); ++k) {
         AwakeStem& a = awake_[k];
         a.listedAt = a.stem.position;
-        Eigen::AlignedBox3d box;
-        for (const Vec3& p : a.stem.position) box.extend(p);
-        const double r = 0.5 * a.stem.diameterAt(0) + 0.5 * kStemPairSkin;
-        boxes_[k] = Eigen::AlignedBox3d(box.min() - Vec3::Constant(r), box.max() + Vec3::Constant(r));
+        boxes_[k] = widenedNodeBox(a.stem, 0.5 * kStemPairSkin);
     }
     // A connection within reach of the other stem's connection lies, widened by its own radius and half
     // the skin, in the other stem's box: only those are paired (two crossing stems share a few).

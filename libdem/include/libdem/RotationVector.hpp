@@ -3,8 +3,12 @@
 // Jacobians the stems' springs need. Stems turn by hundredths of a radian per connection and by
 // microradians per step, so each function switches to its Taylor series below a small angle:
 // the series are truncated where the next term is under 1e-15 relative, and they spare the
-// trigonometric calls that otherwise dominate a stem step. They run for every connection and
-// every node at every stem step, so they are defined here, where the compiler can inline them.
+// trigonometric calls that otherwise dominate a stem step. Their constants are reciprocals
+// multiplied, never divisors (a division costs several multiplications, and the compiler may not
+// swap one for the other), and their halves are summed as Estrin's scheme does, so that the
+// processor computes them side by side rather than in one chain of dependent operations. They run
+// for every connection and every node at every stem step, so they are defined here, where the
+// compiler can inline them.
 #include <cmath>
 
 #include "libdem/RigidBody.hpp"
@@ -38,13 +42,16 @@ constexpr double kSmallAngle = 0.1;      // rad: next terms ~ a^8 / 4e6 < 3e-15
 // Rotation vector of q, taking the shorter way round.
 inline Vec3 rotationVector(Quat q) {
     if (q.w() < 0) q.coeffs() *= -1;
-    const double s = q.vec().norm();
-    if (s < rotation_series::kSmallHalfSine * q.w()) {
+    const double s2 = q.vec().squaredNorm(), w = q.w();
+    if (s2 < rotation_series::kSmallHalfSine * rotation_series::kSmallHalfSine * w * w) {
         // angle = 2 atan(x) with x = s / w: 2 atan(x) / s = (2 / w) (1 - x^2/3 + x^4/5 - x^6/7 + x^8/9)
-        const double x2 = s * s / (q.w() * q.w());
-        return 2 / q.w() * (1 - x2 * (1.0 / 3 - x2 * (1.0 / 5 - x2 * (1.0 / 7 - x2 / 9)))) * q.vec();
+        const double invW = 1 / w;
+        const double x2 = s2 * invW * invW, x4 = x2 * x2;
+        const double series = (1 - x2 * (1.0 / 3)) + x4 * ((1.0 / 5 - x2 * (1.0 / 7)) + x4 * (1.0 / 9));
+        return 2 * invW * series * q.vec();
     }
-    return 2 * std::atan2(s, q.w()) / s * q.vec();
+    const double s = std::sqrt(s2);
+    return 2 * std::atan2(s, w) / s * q.vec();
 }
 
 // The rotation whose rotation vector is theta.
@@ -52,9 +59,9 @@ inline Quat fromRotationVector(const Vec3& theta) {
     const double a2 = theta.squaredNorm();
     if (a2 < rotation_series::kSmallAngle * rotation_series::kSmallAngle) {
         // h = angle / 2: cos h and sin(h) / angle by their series to h^8
-        const double h2 = 0.25 * a2;
-        const double c = 1 - h2 * (1.0 / 2 - h2 * (1.0 / 24 - h2 * (1.0 / 720 - h2 / 40320)));
-        const double sOverAngle = 0.5 * (1 - h2 * (1.0 / 6 - h2 * (1.0 / 120 - h2 * (1.0 / 5040 - h2 / 362880))));
+        const double h2 = 0.25 * a2, h4 = h2 * h2;
+        const double c = (1 - h2 * 0.5) + h4 * ((1.0 / 24 - h2 * (1.0 / 720)) + h4 * (1.0 / 40320));
+        const double sOverAngle = 0.5 * ((1 - h2 * (1.0 / 6)) + h4 * ((1.0 / 120 - h2 * (1.0 / 5040)) + h4 * (1.0 / 362880)));
         return Quat(c, sOverAngle * theta.x(), sOverAngle * theta.y(), sOverAngle * theta.z());
     }
     const double angle = std::sqrt(a2);
@@ -67,7 +74,7 @@ inline RotationJacobian inverseLeftJacobian(const Vec3& theta) {
     const double a2 = theta.squaredNorm();
     double c;
     if (a2 < rotation_series::kSmallAngle * rotation_series::kSmallAngle) {
-        c = 1.0 / 12 + a2 * (1.0 / 720 + a2 * (1.0 / 30240 + a2 / 1209600));
+        c = (1.0 / 12 + a2 * (1.0 / 720)) + a2 * a2 * (1.0 / 30240 + a2 * (1.0 / 1209600));
     } else {
         const double a = std::sqrt(a2);
         c = 1 / a2 - (1 + std::cos(a)) / (2 * a * std::sin(a));
@@ -80,8 +87,9 @@ inline RotationJacobian rightJacobian(const Vec3& theta) {
     const double a2 = theta.squaredNorm();
     double b, c;
     if (a2 < rotation_series::kSmallAngle * rotation_series::kSmallAngle) {
-        b = 0.5 - a2 * (1.0 / 24 - a2 * (1.0 / 720 - a2 / 40320));
-        c = 1.0 / 6 - a2 * (1.0 / 120 - a2 * (1.0 / 5040 - a2 / 362880));
+        const double a4 = a2 * a2;
+        b = (0.5 - a2 * (1.0 / 24)) + a4 * (1.0 / 720 - a2 * (1.0 / 40320));
+        c = (1.0 / 6 - a2 * (1.0 / 120)) + a4 * (1.0 / 5040 - a2 * (1.0 / 362880));
     } else {
         const double a = std::sqrt(a2);
         b = (1 - std::cos(a)) / a2;

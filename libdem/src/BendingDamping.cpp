@@ -38,6 +38,7 @@ BendingDamping::BendingDamping(const BendingParams& p, const HingeCoefficients& 
         // branches act as springs and stiffen the real part by 1 + (kBranches / 2) g.
         const double g = p.lossFactor / (kLossPerUnitBranchStiffness - 0.5 * kBranches * p.lossFactor);
         branchStiffness_ = g * k.elastic;
+        halfBranchCompliance_ = 0.5 / branchStiffness_;
     }
 }
 
@@ -66,7 +67,7 @@ BendingDamping::Step BendingDamping::advance(const Vec2& rate, const Decay& d) {
         s.moment += branch_[b];
         squares += branch_[b].squaredNorm();
     }
-    const double stored = squares / (2 * branchStiffness_);
+    const double stored = squares * halfBranchCompliance_;
     s.dissipated = rate.dot(integral) - (stored - stored_);
     stored_ = stored;
     return s;

@@ -60,13 +60,14 @@ ConnectionBeam::Flexibility ConnectionBeam::flexibility(const Channel& ch) const
 
 ConnectionBeam::Flexibility ConnectionBeam::flexibility(const std::array<double, kMaxSections>& compliance) const {
     const Rule& r = *rule_;
-    Flexibility f{0, 0, 4 / (length_ * length_ * shearStiffness_)};
+    Flexibility f{0, 0, 4 / (length_ * length_ * shearStiffness_), 0};
     for (int i = 0; i < r.count; ++i) {
         const double wc = r.weight[i] * compliance[i];
         f.mm += wc;
         f.mc += wc * r.xi[i];
         f.cc += wc * r.xi[i] * r.xi[i];
     }
+    f.inverseDet = 1 / (f.mm * f.cc - f.mc * f.mc);
     return f;
 }
 
@@ -89,9 +90,8 @@ void ConnectionBeam::solveForces(Channel& ch, const Moment& theta, const Moment&
         ch.flexibilityStale = false;
     }
     const Flexibility f = ch.flexibility;
-    const double det = f.mm * f.cc - f.mc * f.mc;
-    ch.mean = (f.cc * a - f.mc * b) / det;
-    ch.change = (f.mm * b - f.mc * a) / det;
+    ch.mean = f.inverseDet * (f.cc * a - f.mc * b);
+    ch.change = f.inverseDet * (f.mm * b - f.mc * a);
 }
 
 double ConnectionBeam::channelEnergy(const Channel& ch) const {
@@ -117,8 +117,8 @@ HingeWork ConnectionBeam::deformChannel(Channel& ch, const Moment& theta, const 
         Section& s = ch.section[i];
         if (s.yielded) continue;
         const Moment m = sectionMomentOf(i);
+        if (m.squaredNorm() <= s.yieldMoment * s.yieldMoment) continue;  // the common case, without a root
         const double norm = m.norm();
-        if (norm <= s.yieldMoment) continue;
         const double softening = 1 / sectionK_[i].unloading - 1 / sectionK_[i].elastic;
         s.plastic -= softening * s.yieldMoment / norm * m;
         w.created += r.weight[i] * 0.5 * s.yieldMoment * s.yieldMoment * softening;
@@ -132,16 +132,15 @@ HingeWork ConnectionBeam::deformChannel(Channel& ch, const Moment& theta, const 
     bool any = false;
     for (int i = 0; i < n; ++i) {
         trial[i] = sectionMomentOf(i);
-        const double t = trial[i].norm();
-        active[i] = t > ch.section[i].yieldMoment;
-        if (active[i]) normal[i] = trial[i] / t;
+        const double y = ch.section[i].yieldMoment;
+        active[i] = trial[i].squaredNorm() > y * y;
+        if (active[i]) normal[i] = trial[i].normalized();
         any = any || active[i];
     }
     if (!any) return w;
 
     const Flexibility f = ch.flexibility;
-    const double det = f.mm * f.cc - f.mc * f.mc;
-    const double g11 = f.cc / det, g12 = -f.mc / det, g22 = f.mm / det;  // the element's stiffness
+    const double g11 = f.cc * f.inverseDet, g12 = -f.mc * f.inverseDet, g22 = f.mm * f.inverseDet;  // the element's stiffness
     // How much a unit flow at section j lowers the moment at section i.
     const auto influence = [&](int i, int j) {
         return r.weight[j] * (g11 + g12 * (r.xi[i] + r.xi[j]) + g22 * r.xi[i] * r.xi[j]);

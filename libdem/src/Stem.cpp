@@ -112,6 +112,8 @@ Stem::Stem(const StemGeometry& g, const StemParams& p, const Vec3& foot, StemFoo
     for (std::size_t i = 0; i <= n; ++i) {
         const double share = (i == 0 || i == n) ? 0.5 * length_ : length_;
         inertia_[i] = mass_[i] * (diameter[i] * diameter[i] / 16 + share * share / 12);
+        inverseMass_.push_back(1 / mass_[i]);
+        inverseInertia_.push_back(1 / inertia_[i]);
     }
     // Wood's loss factor damps its axial vibration as it damps its bending (docs/model-stems.md,
     // "Time step"): a dashpot c = eta k / omega, omega the connection's highest axial frequency
@@ -156,7 +158,7 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         ledger.axialDamping += k.dashpotForce * (stretch.z() - k.dashpotStretch);
         k.dashpotStretch = stretch.z();
 
-        const HingeWork w = theta.norm() > kFoldedConnection ? k.bending.snap()
+        const HingeWork w = theta.squaredNorm() > kFoldedConnection * kFoldedConnection ? k.bending.snap()
                                                              : k.bending.deform(theta.head<2>(), stretch.head<2>());
         ledger.bendingPlasticity += w.dissipated;
         ledger.unloadingGain += w.created;

@@ -55,7 +55,7 @@ StemEnergy StemStepper::step(Stem& stem, double dt, const StemLoads& loads) {
             if (hasForce) f += loads.force[i];
             // Leapfrog: v(t - dt/2) -> v(t + dt/2); the kinetic energy at t from their mean.
             const Vec3 before = v;
-            v += dt / mass[i] * f;
+            v += dt * stem.inverseMass()[i] * f;
             e.kinetic += 0.125 * mass[i] * (before + v).squaredNorm();
             const Vec3 dx = dt * v;
             if (hasForce) ledger.externalWork += loads.force[i].dot(dx);
@@ -67,12 +67,17 @@ StemEnergy StemStepper::step(Stem& stem, double dt, const StemLoads& loads) {
             Vec3 t = torque_[i] - rate * inertia[i] * w;
             if (hasTorque) t += loads.torque[i];
             const Vec3 before = w;
-            w += dt / inertia[i] * t;  // isotropic inertia: no gyroscopic term
+            w += dt * stem.inverseInertia()[i] * t;  // isotropic inertia: no gyroscopic term
             e.kinetic += 0.125 * inertia[i] * (before + w).squaredNorm();
             const Vec3 turn = dt * w;
             if (hasTorque) ledger.externalWork += loads.torque[i].dot(turn);
             ledger.relaxation += rate * inertia[i] * before.dot(turn);
-            stem.orientation[i] = (fromRotationVector(turn) * stem.orientation[i]).normalized();
+            Quat& q = stem.orientation[i];
+            q = fromRotationVector(turn) * q;
+            // Back to unit length: both factors are unit to rounding, so |q|^2 = 1 + e with e ~ 1e-16,
+            // and one Newton step for 1 / sqrt(|q|^2), (3 - |q|^2) / 2, leaves an error of order e^2
+            // without the root and the division normalized() takes.
+            q.coeffs() *= 0.5 * (3 - q.coeffs().squaredNorm());
         }
         if (!stem.position[i].allFinite() || !stem.velocity[i].allFinite() || !stem.angularVelocity[i].allFinite())
             throw SimulationError("stem node " + std::to_string(i) + " became NaN (time step " + std::to_string(dt) +

@@ -59,6 +59,7 @@ public:
 private:
     double viscosity_ = 0;        // tau K_Elast (Eqs. 7-8)
     double branchStiffness_ = 0;  // g K_Elast
+    double halfBranchCompliance_ = 0;  // 1 / (2 g K_Elast), for the branches' energy
     std::array<Vec2, kBranches> branch_{};
     double stored_ = 0;  // sum of |m_b|^2 / (2 g K_Elast), kept as the branches advance
 };

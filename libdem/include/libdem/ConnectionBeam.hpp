@@ -64,6 +64,7 @@ private:
     };
     struct Flexibility {
         double mm, mc, cc;  // rad per N m: theta = mm M + mc dM + ..., eps = mc M + cc dM + ...
+        double inverseDet;  // 1 / (mm cc - mc^2): inverting it is every step's work
     };
     // One set of sections: all of them for the moment vector (isotropic), or one per axis.
     struct Channel {

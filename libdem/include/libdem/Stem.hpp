@@ -53,6 +53,9 @@ public:
     // Rotational inertia of each node about its centre, taken isotropic: that of its share of the
     // stem about a transverse axis, m (D^2/16 + L^2/12), L the share's length.
     const std::vector<double>& inertia() const { return inertia_; }
+    // Their reciprocals, which every step multiplies by (a division costs several multiplications).
+    const std::vector<double>& inverseMass() const { return inverseMass_; }
+    const std::vector<double>& inverseInertia() const { return inverseInertia_; }
     const StemGeometry& geometry() const { return geometry_; }
     StemFoot foot() const { return support_; }
     bool translates(std::size_t node) const { return node > 0; }
@@ -105,7 +108,7 @@ private:
     double length_;
     Quat footRest_;
     Eigen::Vector3d rootAngle_ = Eigen::Vector3d::Zero();
-    std::vector<double> mass_, inertia_;
+    std::vector<double> mass_, inertia_, inverseMass_, inverseInertia_;
     std::vector<Connection> connections_;
     RootSpring root_;
     double elasticEnergy_ = 0;

@@ -170,11 +170,13 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         }
         stored += linear + k.bending.storedEnergy();
 
-        // theta moves at inverseLeftJacobian(theta) R_a^T (omega_b - omega_a); the moment M conjugate to
-        // theta acts on a as R_a J^-T M and on b as the opposite, so its power is exactly -M . dtheta/dt.
-        const RotationJacobian toTheta = inverseLeftJacobian(theta);
-        const Eigen::Matrix3d ra = orientation[a].toRotationMatrix();
-        const Vec3 rate = toTheta * (ra.transpose() * (angularVelocity[b] - angularVelocity[a]));
+        // theta moves at J^-1 R_a^T (omega_b - omega_a), J^-1 = inverseLeftJacobian(theta); the moment M
+        // conjugate to theta acts on a as R_a J^-T M and on b as the opposite, so its power is exactly
+        // -M . dtheta/dt. With R_a = R_frame R(theta / 2)^T both go through the connection's frame and
+        // the symmetric S = J^-1 R(theta / 2) (midpointInverseJacobian): rate S R_frame^T (omega_b -
+        // omega_a), moment R_frame S M on a.
+        const RotationJacobian toTheta = midpointInverseJacobian(theta);
+        const Vec3 rate = toTheta * (frame.transpose() * (angularVelocity[b] - angularVelocity[a]));
         const BendingDamping::Step damped = k.damping.advance(rate.head<2>(), decay);
         ledger.bendingDamping += damped.dissipated;
         stored += k.damping.storedEnergy();
@@ -187,14 +189,14 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         // the frame follows them (exactly half each for small theta). Node b's share is
         // (1/2) R_a J^-T J_r(theta / 2)^T R_frame^T (chord x f), and R_frame^T (chord x f) is the cross
         // product of the two in the connection frame; b's share and the moment act through the same
-        // R_a J^-T, so they are summed before it.
+        // R_a J^-T = R_frame S, so they are summed before it.
         const Vec2 shear = k.bending.shearForce();
         // Wood's internal friction in the axial spring: a dashpot along it, at the nodes' mid-step velocities.
         k.dashpotForce = k.axialDamping * (velocity[b] - velocity[a]).dot(frame.col(2));
         const Vec3 springs(shear.x(), shear.y(), k.axial * stretch.z() + k.dashpotForce);
         const Vec3 turn = chord.cross(springs);
         const Vec3 couple =
-            ra * toTheta.transposeTimes(moment - 0.5 * rightJacobian(0.5 * theta).transposeTimes(turn));
+            frame * toTheta.transposeTimes(moment - 0.5 * rightJacobian(0.5 * theta).transposeTimes(turn));
         const Vec3 f = frame * springs;
         force[a] += f;
         force[b] -= f;

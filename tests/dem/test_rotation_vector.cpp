@@ -61,3 +61,20 @@ TEST(RotationVector, JacobiansMatchTheClosedFormsNearTheSwitch) {
     EXPECT_LT((matrixOf(inverseLeftJacobian(-theta)) * matrixOf(rightJacobian(theta)) - Eigen::Matrix3d::Identity()).norm(),
               1e-14);
 }
+
+// The stems take the rate of a connection's rotation vector from the relative angular velocity in
+// its halfway frame: inverseLeftJacobian(theta) R(theta / 2), which midpointInverseJacobian gives
+// as one symmetric map. Against that product, on both sides of the series switch and at large angles
+// (the closed forms of the product's factors are 1e-16 accurate, so 1e-14 leaves room for the
+// product's rounding only).
+TEST(RotationVector, MidpointJacobianIsTheInverseLeftJacobianTurnedByHalfTheRotation) {
+    const Vec3 axis = Vec3(0.6, 0.1, -0.75).normalized();
+    for (double a : {1e-6, 0.02, 0.0999, 0.1001, 0.3, 1.0, 1.5}) {
+        const Vec3 theta = a * axis;
+        const Eigen::Matrix3d product =
+            matrixOf(inverseLeftJacobian(theta)) * fromRotationVector(0.5 * theta).toRotationMatrix();
+        const RotationJacobian s = midpointInverseJacobian(theta);
+        EXPECT_LT((matrixOf(s) - product).norm(), 1e-14) << a;
+        EXPECT_LT((transposeOf(s) - product.transpose()).norm(), 1e-14) << a;
+    }
+}

@@ -82,6 +82,23 @@ inline RotationJacobian inverseLeftJacobian(const Vec3& theta) {
     return {theta, 0.5, c};
 }
 
+// The same map for a turn u given in the frame halfway along the rotation, exp(theta / 2):
+// inverseLeftJacobian(theta) R(theta / 2) = I - beta [theta]x^2, beta = ((a / 2) / sin(a / 2) - 1) / a^2,
+// a = |theta| (both factors are functions of [theta]x; the product's odd part cancels, as expanding
+// them shows). Symmetric, so it is its own transpose.
+inline RotationJacobian midpointInverseJacobian(const Vec3& theta) {
+    const double a2 = theta.squaredNorm();
+    double beta;
+    if (a2 < rotation_series::kSmallAngle * rotation_series::kSmallAngle) {
+        // (h / sin h - 1) / (4 h^2) with h = a / 2, by its series to a^6
+        beta = (1.0 / 24 + a2 * (7.0 / 5760)) + a2 * a2 * (31.0 / 967680 + a2 * (127.0 / 154828800));
+    } else {
+        const double h = 0.5 * std::sqrt(a2);
+        beta = (h / std::sin(h) - 1) / a2;
+    }
+    return {theta, 0, -beta};
+}
+
 // A change d of theta turns exp(theta) on the right by rightJacobian(theta) * d.
 inline RotationJacobian rightJacobian(const Vec3& theta) {
     const double a2 = theta.squaredNorm();

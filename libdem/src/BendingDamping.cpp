@@ -25,6 +25,7 @@ BendingDamping::Decay BendingDamping::decayOver(double dt) {
     for (int b = 0; b < kBranches; ++b) {
         d.factor[b] = std::exp(-dt / kRelaxationTimes[b]);
         d.lag[b] = kRelaxationTimes[b] * (1 - d.factor[b]);
+        d.settled += dt * kRelaxationTimes[b];
     }
     return d;
 }
@@ -57,12 +58,12 @@ BendingDamping::Step BendingDamping::advance(const Vec2& rate, const Decay& d) {
     // the step's end, where they are: the step's mean would lag half a step behind their rotation,
     // and a spring that lags pumps energy in.
     const Vec2 steady = branchStiffness_ * rate;
-    Vec2 integral = Vec2::Zero();
+    Vec2 integral = d.settled * steady;
     double squares = 0;
     for (int b = 0; b < kBranches; ++b) {
         const Vec2 settled = kRelaxationTimes[b] * steady;  // m for a steady rate
         const Vec2 offset = branch_[b] - settled;
-        integral += settled * dt + offset * d.lag[b];
+        integral += offset * d.lag[b];
         branch_[b] = settled + offset * d.factor[b];
         s.moment += branch_[b];
         squares += branch_[b].squaredNorm();

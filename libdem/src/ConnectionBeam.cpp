@@ -112,12 +112,13 @@ HingeWork ConnectionBeam::deformChannel(Channel& ch, const Moment& theta, const 
 
     // First yield: the section's elastic stiffness drops to K_Unld (Fig. 3). Its deformation at the
     // yield moment is kept, so the energy it stores there grows: the law creates it (Eq. 4).
-    bool switched = false;
+    bool switched = false, beyond = false;
     for (int i = 0; i < n; ++i) {
         Section& s = ch.section[i];
-        if (s.yielded) continue;
         const Moment m = sectionMomentOf(i);
         if (m.squaredNorm() <= s.yieldMoment * s.yieldMoment) continue;  // the common case, without a root
+        beyond = true;
+        if (s.yielded) continue;
         const double norm = m.norm();
         const double softening = 1 / sectionK_[i].unloading - 1 / sectionK_[i].elastic;
         s.plastic -= softening * s.yieldMoment / norm * m;
@@ -125,6 +126,7 @@ HingeWork ConnectionBeam::deformChannel(Channel& ch, const Moment& theta, const 
         s.yielded = switched = true;
         ch.flexibilityStale = true;
     }
+    if (!beyond) return w;  // every section elastic: the trial below would find none active
     if (switched) solveForces(ch, theta, eps);
 
     std::array<Moment, kMaxSections> trial, normal;

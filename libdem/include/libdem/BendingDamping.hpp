@@ -40,6 +40,7 @@ public:
         double dt = 0;
         std::array<double, kBranches> factor{};  // exp(-dt / tau_b)
         std::array<double, kBranches> lag{};     // tau_b (1 - exp(-dt / tau_b)): the step's integral of the decay
+        double settled = 0;  // dt times the sum of the tau_b: the step's integral of the branches settled at a unit rate
     };
     static Decay decayOver(double dt);
     // Over a step at the relative rotation rate `rate` (x, y of the connection frame, rad/s).

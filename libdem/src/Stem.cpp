@@ -147,9 +147,10 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         const std::size_t a = c, b = c + 1;
         // Relative rotation of b with respect to a. Its components are the same in a's frame, b's
         // frame and the frame halfway between them, which is the connection's frame.
-        const Vec3 theta = rotationVector(orientation[a].conjugate() * orientation[b]);
+        const Quat relative = orientation[a].conjugate() * orientation[b];
+        const Vec3 theta = rotationVector(relative);
         // As a matrix: it turns four vectors, each a matrix product where a quaternion's costs twice that.
-        const Eigen::Matrix3d frame = (orientation[a] * fromRotationVector(0.5 * theta)).toRotationMatrix();
+        const Eigen::Matrix3d frame = (orientation[a] * halfway(relative)).toRotationMatrix();
         const Vec3 chord = frame.transpose() * (position[b] - position[a]);  // in the connection frame
         const Vec3 stretch = chord - Vec3(0, 0, length_ + k.weightCompression);  // shear x, y; axial z
         // The axial dashpot's work over the step just made, booked now that its stretch is known:

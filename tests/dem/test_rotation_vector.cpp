@@ -78,3 +78,17 @@ TEST(RotationVector, MidpointJacobianIsTheInverseLeftJacobianTurnedByHalfTheRota
         EXPECT_LT((transposeOf(s) - product.transpose()).norm(), 1e-14) << a;
     }
 }
+
+// The connection's frame is halfway along the relative rotation, taken without the rotation vector:
+// it must be the rotation by half that vector, whichever sign the quaternion comes with.
+TEST(RotationVector, HalfwayIsTheRotationByHalfTheRotationVector) {
+    const Vec3 axis = Vec3(-0.4, 0.9, 0.2).normalized();
+    for (double a : {1e-8, 0.01, 0.5, 2.0, 3.1}) {
+        const Quat q = fromRotationVector(a * axis);
+        const Quat expected = fromRotationVector(0.5 * rotationVector(q));
+        for (const Quat& sign : {q, Quat(-q.coeffs())}) {
+            const Quat h = halfway(sign);
+            EXPECT_LT((h.coeffs() - expected.coeffs()).norm(), 1e-15) << a;
+        }
+    }
+}

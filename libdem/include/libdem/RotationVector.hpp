@@ -54,6 +54,15 @@ inline Vec3 rotationVector(Quat q) {
     return 2 * std::atan2(s, w) / s * q.vec();
 }
 
+// The rotation halfway along q, the shorter way round: fromRotationVector(rotationVector(q) / 2),
+// taken from q directly as (1 + q) / |1 + q|, where |1 + q|^2 = 2 (1 + w) for a unit q with w >= 0,
+// so that it need not wait for the rotation vector.
+inline Quat halfway(Quat q) {
+    if (q.w() < 0) q.coeffs() *= -1;
+    const double scale = 1 / std::sqrt(2 * (1 + q.w()));
+    return Quat((1 + q.w()) * scale, q.x() * scale, q.y() * scale, q.z() * scale);
+}
+
 // The rotation whose rotation vector is theta.
 inline Quat fromRotationVector(const Vec3& theta) {
     const double a2 = theta.squaredNorm();

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "libdem/SegmentGeometry.hpp"
+
 namespace sylva::dem {
 
 namespace {
@@ -57,15 +59,30 @@ bool StemActivity::blockCanReach(const RigidBody& block, const Stem& s, double g
     const double horizon = cfg_.returnHorizon;
     // The block flies on under gravity over the horizon: its mean velocity then.
     const Vec3 blockVelocity = block.velocity - Vec3(0, 0, 0.5 * gravity * horizon);
-    // A node stands for the half-connections on either side of it.
-    const double slack = block.boundingRadius() + cfg_.wakeMargin + 0.5 * s.connectionLength();
-    for (std::size_t i = 0; i < s.nodeCount(); ++i) {
-        const Vec3 d = s.position[i] - block.position;
+    const double slack = block.boundingRadius() + cfg_.wakeMargin;
+    // The gap from the block's bounding sphere, widened by the margin, to the stem's surface at a
+    // point of its axis `radius` thick, which moves no faster than `speed`.
+    const auto reaches = [&](const Vec3& point, double radius, double speed) {
+        const Vec3 d = point - block.position;
         const double distance = d.norm();
-        const double gap = distance - slack - 0.5 * s.diameterAt(s.restHeight(i));
+        const double gap = distance - slack - radius;
         if (gap <= 0) return true;
-        const double closing = blockVelocity.dot(d) / distance + s.velocity[i].norm();
-        if (gap < closing * horizon) return true;
+        return gap < (blockVelocity.dot(d) / distance + speed) * horizon;
+    };
+    const auto radiusAt = [&](std::size_t node) { return 0.5 * s.diameterAt(s.restHeight(node)); };
+    // Each intact connection at its point closest to the block (the stem is a cone between its nodes,
+    // and no point of the connection moves faster than its faster node, but for turning at its radius);
+    // a node both of whose connections broke, on its own.
+    for (std::size_t c = 0; c < s.connectionCount(); ++c) {
+        if (s.broken(c)) continue;
+        const Vec3 &a = s.position[c], &b = s.position[c + 1];
+        const double t = closestOnSegment(block.position, a, b);
+        const double speed = std::sqrt(std::max(s.velocity[c].squaredNorm(), s.velocity[c + 1].squaredNorm()));
+        if (reaches(a + t * (b - a), radiusAt(c) + t * (radiusAt(c + 1) - radiusAt(c)), speed)) return true;
+    }
+    for (std::size_t i = 0; i < s.nodeCount(); ++i) {
+        const bool below = i > 0 && !s.broken(i - 1), above = i < s.connectionCount() && !s.broken(i);
+        if (!below && !above && reaches(s.position[i], radiusAt(i), s.velocity[i].norm())) return true;
     }
     return false;
 }

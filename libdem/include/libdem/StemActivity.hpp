@@ -40,10 +40,11 @@ public:
     std::optional<StemAwake> holds(const RigidBody& block, const PlacedTree& tree, const Stem& s, bool broken,
                                    double lastBlockContact, double t) const;
 
-    // The block could reach one of this stem's nodes within forest.return_horizon_s: it is within
-    // touching distance (its bounding sphere, the wake margin and half a connection from the node's
-    // surface), or the gap closes in that time at the block's approach speed (its velocity, flying on
-    // under gravity, towards the node) plus the node's speed in any direction.
+    // The block could reach this stem within forest.return_horizon_s: it is within touching distance
+    // of one of its intact connections (its bounding sphere and the wake margin from the connection's
+    // surface, at the point of its axis closest to the block), or the gap there closes in that time at
+    // the block's approach speed (its velocity, flying on under gravity, towards that point) plus the
+    // faster of the connection's nodes' speeds. A node whose connections both broke counts on its own.
     bool blockCanReach(const RigidBody& block, const Stem& s, double gravity) const;
     // A moving stem the block has left may stop where it stands (stay awake, no longer stepped):
     // the block cannot reach it within the horizon, and it has either swung free of the soil and of

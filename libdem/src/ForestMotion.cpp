@@ -119,13 +119,16 @@ void ForestMotion::setMovingWhereTouched() {
 }
 
 // A bent or broken stem can reach a neighbour the block never came near: wake the stems that
-// the displaced nodes of awake stems could touch before the next check. Checked every few steps,
+// the displaced nodes of moving stems could touch before the next check. Checked every few steps,
 // with the nodes' travel over that time added to the margin.
 void ForestMotion::wakeNeighbours() {
     if (++sinceNeighbourCheck_ < kNeighbourCheckInterval) return;
     sinceNeighbourCheck_ = 0;
     toWake_.clear();  // woken after the loop: waking grows awake_, which the loop reads
     for (const AwakeStem& a : awake_) {
+        // A stem at rest reaches nothing it did not reach when it stopped; woken by it, a sleeping
+        // neighbour would stand awake for sleep_after_s, fall asleep and be woken again.
+        if (!a.moving) continue;
         const Stem& s = a.stem;
         const PlacedTree& own = trees_.tree(a.tree);
         for (std::size_t i = 1; i < s.nodeCount(); ++i) {

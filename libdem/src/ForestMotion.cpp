@@ -216,6 +216,7 @@ double ForestMotion::stableStep(const RigidBody& block, StableStep& blockStep) c
 }
 
 void ForestMotion::applyToConnection(AwakeStem& a, std::size_t c, double t, const Vec3& point, const Vec3& force) {
+    if (!a.moving) return;  // a stem at rest that a moving one touches: not stepped this step
     // The force's line through the axis point q is carried by the two nodes as (1 - t) and t of it,
     // which also reproduces its moment about any point; what the offset from q to the contact
     // point adds (the friction's moment about the axis, mostly twist) is shared likewise.
@@ -230,7 +231,11 @@ void ForestMotion::applyToConnection(AwakeStem& a, std::size_t c, double t, cons
 
 void ForestMotion::forces(const RigidBody& block, double dt, Vec3& force, Vec3& torque) {
     if (empty()) return;
+    // A stem at rest is not stepped: its loads are not read, and its contacts with the soil and with
+    // other resting stems hold still, without work or dissipation, so they only keep their springs'
+    // energy.
     for (auto& a : awake_) {
+        if (!a.moving) continue;
         a.loads.force.assign(a.stem.nodeCount(), Vec3::Zero());
         a.loads.torque.assign(a.stem.nodeCount(), Vec3::Zero());
     }
@@ -244,14 +249,22 @@ void ForestMotion::forces(const RigidBody& block, double dt, Vec3& force, Vec3& 
     }
     for (auto& t : stemTouches_) {
         if (t.ignored) continue;
+        if (!awake(t.treeA)->moving && !awake(t.treeB)->moving) {
+            stored += stemStemLaw_->storedEnergy(t.geometry, t.history);
+            continue;
+        }
         const Vec3 f = stemStemLaw_->force(t.geometry, t.history, dt, contactLedger_);  // on stem A
         applyToConnection(*awake(t.treeA), t.connectionA, t.s, t.geometry.point, f);
         applyToConnection(*awake(t.treeB), t.connectionB, t.t, t.geometry.point, -f);
         stored += stemStemLaw_->storedEnergy(t.geometry, t.history);
     }
     for (auto& t : soilTouches_) {
-        const Vec3 f = stemSoilLaw_->force(t.geometry, t.history, dt, contactLedger_);
         AwakeStem& a = *awake(t.tree);
+        if (!a.moving) {
+            stored += stemSoilLaw_->storedEnergy(t.geometry, t.history);
+            continue;
+        }
+        const Vec3 f = stemSoilLaw_->force(t.geometry, t.history, dt, contactLedger_);
         a.loads.force[t.node] += f;
         a.loads.torque[t.node] += (t.geometry.point - a.stem.position[t.node]).cross(f);
         stored += stemSoilLaw_->storedEnergy(t.geometry, t.history);

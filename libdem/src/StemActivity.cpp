@@ -70,19 +70,18 @@ bool StemActivity::blockCanReach(const RigidBody& block, const Stem& s, double g
         return gap < (blockVelocity.dot(d) / distance + speed) * horizon;
     };
     const auto radiusAt = [&](std::size_t node) { return 0.5 * s.diameterAt(s.restHeight(node)); };
-    // Each intact connection at its point closest to the block (the stem is a cone between its nodes,
-    // and no point of the connection moves faster than its faster node, but for turning at its radius);
-    // a node both of whose connections broke, on its own.
+    // Each node, and each intact connection at its point closest to the block (the stem is a cone
+    // between its nodes, and no point of the connection moves faster than its faster node, but for
+    // turning at its radius). The closing speed depends on the direction: a node the block falls
+    // towards may close its gap first although the connection's closest point does not.
+    for (std::size_t i = 0; i < s.nodeCount(); ++i)
+        if (reaches(s.position[i], radiusAt(i), s.velocity[i].norm())) return true;
     for (std::size_t c = 0; c < s.connectionCount(); ++c) {
         if (s.broken(c)) continue;
         const Vec3 &a = s.position[c], &b = s.position[c + 1];
         const double t = closestOnSegment(block.position, a, b);
         const double speed = std::sqrt(std::max(s.velocity[c].squaredNorm(), s.velocity[c + 1].squaredNorm()));
         if (reaches(a + t * (b - a), radiusAt(c) + t * (radiusAt(c + 1) - radiusAt(c)), speed)) return true;
-    }
-    for (std::size_t i = 0; i < s.nodeCount(); ++i) {
-        const bool below = i > 0 && !s.broken(i - 1), above = i < s.connectionCount() && !s.broken(i);
-        if (!below && !above && reaches(s.position[i], radiusAt(i), s.velocity[i].norm())) return true;
     }
     return false;
 }

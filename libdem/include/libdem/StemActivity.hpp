@@ -41,10 +41,10 @@ public:
                                    double lastBlockContact, double t) const;
 
     // The block could reach this stem within forest.return_horizon_s: it is within touching distance
-    // of one of its intact connections (its bounding sphere and the wake margin from the connection's
-    // surface, at the point of its axis closest to the block), or the gap there closes in that time at
-    // the block's approach speed (its velocity, flying on under gravity, towards that point) plus the
-    // faster of the connection's nodes' speeds. A node whose connections both broke counts on its own.
+    // of a node or of an intact connection (its bounding sphere and the wake margin from the stem's
+    // surface there; a connection at the point of its axis closest to the block), or the gap there
+    // closes in that time at the block's approach speed (its velocity, flying on under gravity,
+    // towards that point) plus the node's speed (a connection's: its faster node's).
     bool blockCanReach(const RigidBody& block, const Stem& s, double gravity) const;
     // A moving stem the block has left may stop where it stands (stay awake, no longer stepped):
     // the block cannot reach it within the horizon, and it has either swung free of the soil and of

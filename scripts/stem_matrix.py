@@ -59,6 +59,8 @@ def main():
     ap.add_argument("--out", default=os.path.join(ROOT, "docs/figures/stem-matrix"))
     a = ap.parse_args()
     spacings = [float(x) for x in a.spacings.split(",")]
+    if len(spacings) < 2:
+        sys.exit("--spacings needs two or more node spacings: each impact at the first is compared with the second")
     volumes = dict(x.split(":") for x in (a.volume_at_height if a.volume_at_height is not None else ["0.5:0.1"]))
     volume_of = lambda height: next((v for hh, v in volumes.items() if float(hh) == float(height)), "")
     cases = list(itertools.product(*(a.__dict__[k].split(",") for k in ("dbh", "speeds", "heights", "eccentricities"))))

@@ -177,6 +177,7 @@ SceneKeys::SceneKeys(StemParameterSet set) : parameterSet(name(set)) {
     k.other("stem.parameters", parameterSet, "named set of the tree's parameters, the defaults of the stem.* and tree_contact.* keys: calibrated (converged in the node spacing, anchorage from winching tests) | toe2018 (the paper's Table 2 and stem, to rerun its study); docs/model-stems.md");
     k.number("stem.node_spacing_m", stem.nodeSpacing, aboveUpTo(0.005, 5, "m", "mm typed as m?"), "largest distance between a stem's nodes");
     k.number("stem.tip_diameter_m", stem.tipDiameter, closed(0, 0.5, "m", "", "cm typed as m?"), "diameter of the cone at H_T");
+    k.number("stem.axial_softening", stem.axialSoftening, closed(1, 100, ""), "the axial springs' MOE A / l divided by this, a resolution like the node spacing: the axial wave, not the bending, limits the stems' step; 1 is wood's (toe2018), results converge towards it (docs/model-stems.md)");
     k.number("stem.density_kg_m3", stem.density, closed(200, 2000, "kg/m^3", "t/m^3 typed as kg/m^3?"), "fresh wood (Table 2: 1.2 t/m^3)");
     k.number("stem.poisson", stem.poisson, {-1, 0.5, true, true, ""}, "nu, for shear and twist (not in the paper)");
     k.number("stem.moe_pa", bend.moe, modulus, "MOE (Eq. 2)");

@@ -87,7 +87,7 @@ Stem::Stem(const StemGeometry& g, const StemParams& p, const Vec3& foot, StemFoo
         const double polar = kPi * std::pow(dCon, 4) / 32;
         ConnectionBeam beam(p.bending, da, db, shearModulus * area / length_, length_, p.bending.sections);
         const BendingDamping damping(p.bending, beam.coefficients());
-        connections_.push_back(Connection{dCon, p.bending.moe * area / length_, shearModulus * polar / length_,
+        connections_.push_back(Connection{dCon, p.bending.moe * area / length_ / p.axialSoftening, shearModulus * polar / length_,
                                           std::move(beam), damping});
     }
 

@@ -25,6 +25,7 @@ void apply(StemParameterSet set, StemParams& stem, StemContactParams& contact) {
     contact.crushingStrength = 3.7e6;                   // "Crushing": green beech across the grain
     stem.root.anchorage = RootAnchorage::StemWeight;    // "Anchorage": M_a = C_reg x stem mass
     stem.root.failureRotation = 25 * std::acos(-1.0) / 180;  // "Anchorage": the plate lets go
+    stem.axialSoftening = 2;                            // "Time step": the axial springs softened
 }
 
 StemParams stemParameters(StemParameterSet set) {

@@ -33,6 +33,7 @@ void validate(const StemParams& p) {
     require(p.poisson > -1 && p.poisson < 0.5, "Poisson ratio", p.poisson, "in (-1, 0.5)");
     require(std::isfinite(p.nodeSpacing) && p.nodeSpacing > 0, "node spacing (m)", p.nodeSpacing, "> 0");
     require(std::isfinite(p.tipDiameter) && p.tipDiameter >= 0, "tip diameter (m)", p.tipDiameter, ">= 0");
+    require(std::isfinite(p.axialSoftening) && p.axialSoftening >= 1, "axial softening", p.axialSoftening, ">= 1");
 }
 
 }  // namespace sylva::dem

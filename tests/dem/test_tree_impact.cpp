@@ -136,8 +136,8 @@ TEST(TreeImpact, BrokenPiecesLoseEnergyOnTheSoil) {
 // the stem crushing under the block, anchorage from the stem's weight letting go at 25 deg) give the
 // same impact at 0.5 and 0.25 m: the tree's own terms over the impact within the 5 % the issue asks of
 // the single-tree matrix, the block's exit energy within 5 % of the impact energy (measured: 20 cm at
-// 10 m/s 41.1 and 41.6 kJ, block 2.0 and 3.1 kJ of 68 kJ; 15 cm at 15 m/s 13.0 and 12.7 kJ, block
-// 126.6 and 129.2 kJ of 153 kJ). The paper's trees (toe2018) give 28.1 and 12.5 kJ for the first.
+// 10 m/s 40.9 and 42.1 kJ, block 2.1 and 3.0 kJ of 68 kJ; 15 cm at 15 m/s 12.9 and 12.7 kJ, block
+// 126.5 and 129.6 kJ of 152 kJ). The paper's trees (toe2018) give 28.1 and 12.5 kJ for the first.
 TEST(TreeImpact, DefaultStemAgreesAtHalfTheSpacing) {
     for (const auto& [dbh, speed] : {std::pair<const char*, const char*>{"20", "10"}, {"15", "15"}}) {
         const auto impact = [&, dbh = dbh, speed = speed](const std::string& spacing) {
@@ -156,5 +156,35 @@ TEST(TreeImpact, DefaultStemAgreesAtHalfTheSpacing) {
                   << tree(fine) << " J (0.25 m); block after " << coarse.energyAfter << ", " << fine.energyAfter << " J\n";
         EXPECT_NEAR(tree(coarse), tree(fine), 0.05 * tree(fine)) << dbh << " cm";
         EXPECT_NEAR(coarse.energyAfter, fine.energyAfter, 0.05 * fine.energyBefore) << dbh << " cm";
+    }
+}
+
+// stem.axial_softening is a resolution, not wood: the default's softened axial springs (docs/
+// model-stems.md, "Time step") give the impact that wood's give, within the 2 % of the impact energy
+// issue 12 asks of a shortcut, for the tree's own terms and for the block's exit energy. The 25 cm
+// stem at 15 m/s is the impact of the 48-impact matrix that moves most steadily with the softening
+// (block after 55.8, 54.0, 50.3 kJ of 152 kJ at 1, 2 and 4: 4 is past the converged part).
+TEST(TreeImpact, SoftenedAxialSpringsGiveWoodsImpact) {
+    for (const auto& [dbh, speed] : {std::pair<const char*, const char*>{"20", "10"}, {"15", "15"}, {"25", "15"}}) {
+        const auto impact = [&, dbh = dbh, speed = speed](const std::vector<std::string>& more) {
+            std::vector<std::string> keys = {std::string("tree.dbh_cm=") + dbh, std::string("block.speed_m_s=") + speed,
+                                             "forest.piece_max_time_s=0"};
+            keys.insert(keys.end(), more.begin(), more.end());
+            const RunResult r = launch(keys);
+            EXPECT_EQ(r.impacts.size(), 1u);
+            EXPECT_LT(r.energy.imbalance, 0.01);
+            return r.impacts.at(0);
+        };
+        const TreeImpact softened = impact({}), wood = impact({"stem.axial_softening=1"});
+        const auto tree = [](const TreeImpact& i) {
+            const StemLedger& d = i.duringImpact;
+            return d.bendingPlasticity + d.bendingDamping + d.rootPlasticity + d.rupture;
+        };
+        std::cout << dbh << " cm at " << speed << " m/s: tree over the impact " << tree(softened) << " J (default), "
+                  << tree(wood) << " J (wood's axial springs); block after " << softened.energyAfter << ", "
+                  << wood.energyAfter << " J of " << wood.energyBefore << " J\n";
+        EXPECT_NEAR(tree(softened), tree(wood), 0.02 * wood.energyBefore) << dbh << " cm";
+        EXPECT_NEAR(softened.energyAfter, wood.energyAfter, 0.02 * wood.energyBefore) << dbh << " cm";
+        EXPECT_EQ(softened.stemBroken, wood.stemBroken) << dbh << " cm";
     }
 }

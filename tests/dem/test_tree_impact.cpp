@@ -6,6 +6,7 @@
 #include <iostream>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "libdem/BlockRun.hpp"
 #include "libstand/Allometry.hpp"
@@ -18,6 +19,23 @@ RunResult launch(std::vector<std::string> keys) {
     keys.push_back("stop.max_time_s=3");
     const Scene scene(loadScene(std::string(SYLVAROCK_DATA) + "/scenes/single-tree.ini", keys));
     return simulateBlock(scene, 0, 1);
+}
+
+// One impact of the default scene's block on a DBH cm stem at `speed` m/s, pieces not followed.
+TreeImpact impactOn(const char* dbh, const char* speed, const std::vector<std::string>& more) {
+    std::vector<std::string> keys = {std::string("tree.dbh_cm=") + dbh, std::string("block.speed_m_s=") + speed,
+                                     "forest.piece_max_time_s=0"};
+    keys.insert(keys.end(), more.begin(), more.end());
+    const RunResult r = launch(keys);
+    EXPECT_EQ(r.impacts.size(), 1u);
+    EXPECT_LT(r.energy.imbalance, 0.01);
+    return r.impacts.at(0);
+}
+
+// The tree's own four terms over the impact.
+double treeTerms(const TreeImpact& i) {
+    const StemLedger& d = i.duringImpact;
+    return d.bendingPlasticity + d.bendingDamping + d.rootPlasticity + d.rupture;
 }
 
 // Elastic energy a cantilever cone stores when a horizontal load at height h brings its foot to the
@@ -140,18 +158,9 @@ TEST(TreeImpact, BrokenPiecesLoseEnergyOnTheSoil) {
 // 126.5 and 129.6 kJ of 152 kJ). The paper's trees (toe2018) give 28.1 and 12.5 kJ for the first.
 TEST(TreeImpact, DefaultStemAgreesAtHalfTheSpacing) {
     for (const auto& [dbh, speed] : {std::pair<const char*, const char*>{"20", "10"}, {"15", "15"}}) {
-        const auto impact = [&, dbh = dbh, speed = speed](const std::string& spacing) {
-            const RunResult r = launch({std::string("tree.dbh_cm=") + dbh, std::string("block.speed_m_s=") + speed,
-                                        "forest.piece_max_time_s=0", "stem.node_spacing_m=" + spacing});
-            EXPECT_EQ(r.impacts.size(), 1u);
-            EXPECT_LT(r.energy.imbalance, 0.01);
-            return r.impacts.at(0);
-        };
-        const TreeImpact coarse = impact("0.5"), fine = impact("0.25");
-        const auto tree = [](const TreeImpact& i) {
-            const StemLedger& d = i.duringImpact;
-            return d.bendingPlasticity + d.bendingDamping + d.rootPlasticity + d.rupture;
-        };
+        const TreeImpact coarse = impactOn(dbh, speed, {"stem.node_spacing_m=0.5"});
+        const TreeImpact fine = impactOn(dbh, speed, {"stem.node_spacing_m=0.25"});
+        const auto tree = treeTerms;
         std::cout << dbh << " cm at " << speed << " m/s: tree over the impact " << tree(coarse) << " J (0.5 m), "
                   << tree(fine) << " J (0.25 m); block after " << coarse.energyAfter << ", " << fine.energyAfter << " J\n";
         EXPECT_NEAR(tree(coarse), tree(fine), 0.05 * tree(fine)) << dbh << " cm";
@@ -166,20 +175,8 @@ TEST(TreeImpact, DefaultStemAgreesAtHalfTheSpacing) {
 // (block after 55.8, 54.0, 50.3 kJ of 152 kJ at 1, 2 and 4: 4 is past the converged part).
 TEST(TreeImpact, SoftenedAxialSpringsGiveWoodsImpact) {
     for (const auto& [dbh, speed] : {std::pair<const char*, const char*>{"20", "10"}, {"15", "15"}, {"25", "15"}}) {
-        const auto impact = [&, dbh = dbh, speed = speed](const std::vector<std::string>& more) {
-            std::vector<std::string> keys = {std::string("tree.dbh_cm=") + dbh, std::string("block.speed_m_s=") + speed,
-                                             "forest.piece_max_time_s=0"};
-            keys.insert(keys.end(), more.begin(), more.end());
-            const RunResult r = launch(keys);
-            EXPECT_EQ(r.impacts.size(), 1u);
-            EXPECT_LT(r.energy.imbalance, 0.01);
-            return r.impacts.at(0);
-        };
-        const TreeImpact softened = impact({}), wood = impact({"stem.axial_softening=1"});
-        const auto tree = [](const TreeImpact& i) {
-            const StemLedger& d = i.duringImpact;
-            return d.bendingPlasticity + d.bendingDamping + d.rootPlasticity + d.rupture;
-        };
+        const TreeImpact softened = impactOn(dbh, speed, {}), wood = impactOn(dbh, speed, {"stem.axial_softening=1"});
+        const auto tree = treeTerms;
         std::cout << dbh << " cm at " << speed << " m/s: tree over the impact " << tree(softened) << " J (default), "
                   << tree(wood) << " J (wood's axial springs); block after " << softened.energyAfter << ", "
                   << wood.energyAfter << " J of " << wood.energyBefore << " J\n";

@@ -160,10 +160,9 @@ TEST(TreeImpact, DefaultStemAgreesAtHalfTheSpacing) {
     for (const auto& [dbh, speed] : {std::pair<const char*, const char*>{"20", "10"}, {"15", "15"}}) {
         const TreeImpact coarse = impactOn(dbh, speed, {"stem.node_spacing_m=0.5"});
         const TreeImpact fine = impactOn(dbh, speed, {"stem.node_spacing_m=0.25"});
-        const auto tree = treeTerms;
-        std::cout << dbh << " cm at " << speed << " m/s: tree over the impact " << tree(coarse) << " J (0.5 m), "
-                  << tree(fine) << " J (0.25 m); block after " << coarse.energyAfter << ", " << fine.energyAfter << " J\n";
-        EXPECT_NEAR(tree(coarse), tree(fine), 0.05 * tree(fine)) << dbh << " cm";
+        std::cout << dbh << " cm at " << speed << " m/s: tree over the impact " << treeTerms(coarse) << " J (0.5 m), "
+                  << treeTerms(fine) << " J (0.25 m); block after " << coarse.energyAfter << ", " << fine.energyAfter << " J\n";
+        EXPECT_NEAR(treeTerms(coarse), treeTerms(fine), 0.05 * treeTerms(fine)) << dbh << " cm";
         EXPECT_NEAR(coarse.energyAfter, fine.energyAfter, 0.05 * fine.energyBefore) << dbh << " cm";
     }
 }
@@ -176,11 +175,10 @@ TEST(TreeImpact, DefaultStemAgreesAtHalfTheSpacing) {
 TEST(TreeImpact, SoftenedAxialSpringsGiveWoodsImpact) {
     for (const auto& [dbh, speed] : {std::pair<const char*, const char*>{"20", "10"}, {"15", "15"}, {"25", "15"}}) {
         const TreeImpact softened = impactOn(dbh, speed, {}), wood = impactOn(dbh, speed, {"stem.axial_softening=1"});
-        const auto tree = treeTerms;
-        std::cout << dbh << " cm at " << speed << " m/s: tree over the impact " << tree(softened) << " J (default), "
-                  << tree(wood) << " J (wood's axial springs); block after " << softened.energyAfter << ", "
+        std::cout << dbh << " cm at " << speed << " m/s: tree over the impact " << treeTerms(softened) << " J (default), "
+                  << treeTerms(wood) << " J (wood's axial springs); block after " << softened.energyAfter << ", "
                   << wood.energyAfter << " J of " << wood.energyBefore << " J\n";
-        EXPECT_NEAR(tree(softened), tree(wood), 0.02 * wood.energyBefore) << dbh << " cm";
+        EXPECT_NEAR(treeTerms(softened), treeTerms(wood), 0.02 * wood.energyBefore) << dbh << " cm";
         EXPECT_NEAR(softened.energyAfter, wood.energyAfter, 0.02 * wood.energyBefore) << dbh << " cm";
         EXPECT_EQ(softened.stemBroken, wood.stemBroken) << dbh << " cm";
     }

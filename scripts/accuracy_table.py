@@ -18,8 +18,15 @@ from pf50_from_runs import interval, runouts  # noqa: E402
 
 
 def rows(folder):
+    """runs.csv by run index, with each run-out as a float (NaN for a failed run)."""
     with open(os.path.join(folder, "runs.csv")) as f:
-        return {int(r["run"]): r for r in csv.DictReader(f)}
+        by_run = {int(r["run"]): r for r in csv.DictReader(f)}
+    for r in by_run.values():
+        try:
+            r["runout_m"] = float(r["runout_m"])
+        except ValueError:
+            r["runout_m"] = float("nan")
+    return by_run
 
 
 def quantile(xs, q):
@@ -44,7 +51,10 @@ def main():
         settings.append((label, folder))
     rng = random.Random(a.seed)
     bare, _ = runouts(a.bare)
-    data = [(label, rows(folder), runouts(folder)[0], folder) for label, folder in settings]
+    data = []
+    for label, folder in settings:
+        by_run = rows(folder)
+        data.append((label, by_run, [r["runout_m"] for r in by_run.values() if r["runout_m"] == r["runout_m"]], folder))
     median_of = lambda xs: statistics.median(rng.choices(xs, k=len(xs)))
     pf_boot = [[] for _ in data]
     for _ in range(a.replicates):
@@ -62,9 +72,8 @@ def main():
         cpu = [float(r["cpu_s"]) for r in by_run.values()]
         ratios = sorted(median_of(cpu) / median_of(def_cpu) for _ in range(a.replicates))
         ratio = "" if k == 1 else f" ({statistics.median(cpu) / statistics.median(def_cpu):.2f} [{interval(ratios)[0]:.2f}, {interval(ratios)[1]:.2f}])"
-        stops = sum(1 for r in by_run.values() if r["stop_reason"] not in ("rest", "left_domain", "time_limit"))
-        paired = [abs(float(r["runout_m"]) - float(ref_rows[i]["runout_m"])) for i, r in by_run.items()
-                  if i in ref_rows and r["runout_m"] not in ("", "nan") and ref_rows[i]["runout_m"] not in ("", "nan")]
+        stops = sum(1 for r in by_run.values() if r["stop_reason"] == "failed")
+        paired = [d for d in (abs(r["runout_m"] - ref_rows[i]["runout_m"]) for i, r in by_run.items() if i in ref_rows) if d == d]
         error = "—" if k == 0 else f"{statistics.median(paired):.0f} / {quantile(paired, 0.9):.0f} m"
         pf = 1 - statistics.median(xs) / d0
         lo, hi = interval(pf_boot[k])

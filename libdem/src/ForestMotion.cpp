@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace sylva::dem {
 
@@ -40,10 +41,14 @@ ForestMotion::ForestMotion(const Scene& scene)
     stemSoilLaw_ = &scene.laws().get(BodyKind::Stem, BodyKind::Soil);
 }
 
+// Looked up by hash, as the contacts are: every contact asks for its stems at every step.
+const ForestMotion::AwakeStem* ForestMotion::awake(std::uint32_t tree) const {
+    const auto slot = awakeSlot_.find(tree);
+    return slot == awakeSlot_.end() ? nullptr : &awake_[slot->second];
+}
+
 ForestMotion::AwakeStem* ForestMotion::awake(std::uint32_t tree) {
-    for (auto& a : awake_)
-        if (a.tree == tree) return &a;
-    return nullptr;
+    return const_cast<AwakeStem*>(std::as_const(*this).awake(tree));
 }
 
 void ForestMotion::wake(std::uint32_t tree, double t) {
@@ -63,6 +68,7 @@ void ForestMotion::wake(std::uint32_t tree, double t) {
     const StableStep stability = stem.stability();
     const bool broken = falling(stem);
     // The all-awake reference steps every stem, standing or not.
+    awakeSlot_[tree] = awake_.size();
     awake_.push_back(AwakeStem{tree, std::move(stem), {}, stability, t, broken, cfg_.activity.allAwake, StemAwake::Waiting, {}, {}, false, false, -std::numeric_limits<double>::infinity(), std::nullopt});
     stemPairsStale_ = true;
 }
@@ -155,8 +161,7 @@ double ForestMotion::stableStep(const RigidBody& block, StableStep& blockStep) c
     // makes as much a limit as the springs.
     for (auto& a : awake_) a.contactBounds.assign(a.stem.nodeCount(), StableStep{});
     auto awakeOf = [this](std::uint32_t tree) -> const AwakeStem& {
-        for (const auto& a : awake_)
-            if (a.tree == tree) return a;
+        if (const AwakeStem* a = awake(tree)) return *a;
         throw std::logic_error("contact with a stem that is not awake");
     };
     struct Share {
@@ -312,7 +317,7 @@ void ForestMotion::sleep(const RigidBody& block, double t) {
     if (empty() || cfg_.activity.allAwake) return;
     const std::size_t n = awake_.size();
     islands_.reset(n);
-    const auto index = [this](std::uint32_t tree) { return static_cast<std::size_t>(awake(tree) - awake_.data()); };
+    const auto index = [this](std::uint32_t tree) { return awakeSlot_.at(tree); };
     for (const auto& c : stemTouches_)
         if (!c.ignored) islands_.join(index(c.treeA), index(c.treeB));  // ignored: fused at rest, no force
 
@@ -359,6 +364,8 @@ void ForestMotion::sleep(const RigidBody& block, double t) {
         stemTouches_.eraseIf([tree](const StemStemTouch& c) { return c.treeA == tree || c.treeB == tree; });
         asleep_.emplace(tree, std::move(s));
         awake_.erase(awake_.begin() + static_cast<std::ptrdiff_t>(k));
+        awakeSlot_.erase(tree);
+        for (std::size_t j = k; j < awake_.size(); ++j) awakeSlot_[awake_[j].tree] = j;  // moved down by one
         stemPairsStale_ = true;
     }
 }

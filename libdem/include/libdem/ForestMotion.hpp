@@ -114,7 +114,8 @@ private:
         bool touching;
     };
     void wake(std::uint32_t tree, double t);
-    AwakeStem* awake(std::uint32_t tree);
+    AwakeStem* awake(std::uint32_t tree);  // null if asleep or never woken
+    const AwakeStem* awake(std::uint32_t tree) const;
     void wakeNeighbours();
     void detectBlockStem(const RigidBody& block, const std::vector<Vec3>& centres, double approach);
     void listStemPairs();
@@ -135,6 +136,7 @@ private:
     const ContactLaw* stemSoilLaw_ = nullptr;
     StemStepper stepper_;
     std::vector<AwakeStem> awake_;
+    std::unordered_map<std::uint32_t, std::size_t> awakeSlot_;  // tree -> its index in awake_
     std::unordered_map<std::uint32_t, Stem> asleep_;  // stems woken before, kept as they were left
     ContactSet<BlockStemTouch> blockTouches_;
     ContactSet<StemStemTouch> stemTouches_;

@@ -158,10 +158,12 @@ int runSimulate(int argc, const char* const* argv) {
                     s.energyFlaggedRuns > 0 ? ": flagged in runs.csv (energy_flag), rerun them with a smaller integration.safety" : "");
     if (const auto& f = s.forestEnergy; f.treeTerms() > 0)
         std::printf("forest: the trees took %.1f MJ (bending %.1f, axial damping %.2f, root %.1f, rupture %.1f), contacts %.1f MJ; "
-                    "left vibrating in stems put to sleep %.2f MJ (%.1f %% of the trees' terms)\n",
+                    "left vibrating in stems put to sleep %.2f MJ (%.1f %% of the trees' terms): %.2f MJ the motion of broken "
+                    "or uprooted stems' pieces, %.3f MJ in standing stems and contact springs (%.1f %%)\n",
                     1e-6 * f.treeTerms(), 1e-6 * (f.bendingPlasticity + f.bendingDamping), 1e-6 * f.axialDamping, 1e-6 * f.rootPlasticity,
                     1e-6 * f.rupture, 1e-6 * (f.contactFriction + f.contactDamping + f.contactCrushing), 1e-6 * f.frozen,
-                    100 * f.frozen / f.treeTerms());
+                    100 * f.frozen / f.treeTerms(), 1e-6 * f.frozenPieces, 1e-6 * (f.frozen - f.frozenPieces),
+                    100 * (f.frozen - f.frozenPieces) / f.treeTerms());
     std::printf("results in %s/\n", out.c_str());
     if (s.failedRuns > 0) {
         std::cerr << "sylvarock simulate: " << s.failedRuns << " of " << s.runs

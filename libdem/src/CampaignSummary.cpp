@@ -135,7 +135,8 @@ void writeImpactEnergyJson(const std::string& path, const RunResult& r) {
                          {"axial_damping", f.axialDamping},           {"root_plasticity", f.rootPlasticity},       {"rupture", f.rupture},
                          {"contact_friction", f.contactFriction},     {"soil_damping", r.energy.contactDamping},
                          {"soil_friction", r.energy.friction},        {"stem_soil_damping", f.contactDamping},
-                         {"contact_crushing", f.contactCrushing},     {"left_vibrating_in_stems", f.frozen}};
+                         {"contact_crushing", f.contactCrushing},     {"left_vibrating_in_stems", f.frozen},
+                         {"left_moving_in_broken_pieces", f.frozenPieces}};
     // The tree's own terms over the impact only (first contact to the block leaving the tree).
     const StemLedger during = r.impacts.empty() ? StemLedger{} : r.impacts.front().duringImpact;
     j["impact_dissipated_j"] = {{"bending_plasticity", during.bendingPlasticity}, {"bending_damping", during.bendingDamping},
@@ -171,14 +172,18 @@ void writeSummaryJson(const std::string& path, const CampaignSummary& s, double 
     for (std::size_t p = 0; p < kStepPhases; ++p) j["time_by_phase_s"][name(static_cast<StepPhase>(p))] = s.phases.seconds[p];
     j["stop_reasons"] = Json::object();
     for (const auto& [k, v] : s.stopReasons) j["stop_reasons"][k] = v;
-    // Where the energy the forest took went, over all runs; what was frozen when stems were put to
-    // sleep still vibrating must stay small next to the trees' own terms (issue 11, point 3).
+    // Where the energy the forest took went, over all runs. What was frozen when stems rested or slept
+    // still moving is split: the pieces of broken or uprooted stems, and what standing stems were left
+    // swaying with, which must stay small next to the trees' own terms (issue 11, point 3).
     const ForestLedger& f = s.forestEnergy;
     j["forest_energy_j"] = {{"bending_plasticity", f.bendingPlasticity}, {"bending_damping", f.bendingDamping},
                             {"axial_damping", f.axialDamping},           {"root_plasticity", f.rootPlasticity},       {"rupture", f.rupture},
                             {"contact_friction", f.contactFriction},     {"stem_soil_damping", f.contactDamping},
-                            {"contact_crushing", f.contactCrushing},     {"left_vibrating_in_stems", f.frozen}};
-    j["left_vibrating_share_of_tree_terms"] = f.treeTerms() > 0 ? f.frozen / f.treeTerms() : 0.0;
+                            {"contact_crushing", f.contactCrushing},     {"left_vibrating_in_stems", f.frozen},
+                            {"left_moving_in_broken_pieces", f.frozenPieces}};
+    const double terms = f.treeTerms() > 0 ? f.treeTerms() : 1.0;  // no tree touched: every share 0
+    j["left_vibrating_share_of_tree_terms"] = f.frozen / terms;
+    j["left_in_standing_stems_share_of_tree_terms"] = (f.frozen - f.frozenPieces) / terms;
     openOut(path) << j.dump(2) << "\n";
 }
 

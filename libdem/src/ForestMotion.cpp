@@ -374,7 +374,9 @@ void ForestMotion::sleep(const RigidBody& block, double t) {
 // moving again from rest. What it still moved with is booked as left vibrating.
 void ForestMotion::rest(AwakeStem& a) {
     Stem& s = a.stem;
-    slept_.frozen += s.kineticEnergy();
+    const double kinetic = s.kineticEnergy();
+    slept_.frozen += kinetic;
+    if (falling(s)) slept_.frozenPieces += kinetic;
     for (std::size_t i = 0; i < s.nodeCount(); ++i) s.velocity[i].setZero(), s.angularVelocity[i].setZero();
     a.moving = false;
     a.standingBudget.reset();

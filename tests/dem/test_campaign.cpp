@@ -68,12 +68,14 @@ TEST(Campaign, ForestEnergyIsSummedOverTheRunsThatFinished) {
         runs[k].forestEnergy.bendingPlasticity = 1000 * (k + 1);
         runs[k].forestEnergy.rupture = 10;
         runs[k].forestEnergy.frozen = 100;
+        runs[k].forestEnergy.frozenPieces = 60;
     }
     runs[2].reason = StopReason::Failed;
     const CampaignSummary s = summarise(runs);
     EXPECT_DOUBLE_EQ(s.forestEnergy.bendingPlasticity, 3000);
     EXPECT_DOUBLE_EQ(s.forestEnergy.treeTerms(), 3020);
     EXPECT_DOUBLE_EQ(s.forestEnergy.frozen, 200);
+    EXPECT_DOUBLE_EQ(s.forestEnergy.frozenPieces, 120);
 }
 
 namespace {

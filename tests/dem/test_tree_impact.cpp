@@ -150,6 +150,30 @@ TEST(TreeImpact, BrokenPiecesLoseEnergyOnTheSoil) {
     EXPECT_GT(during, 0.0);
 }
 
+// What is frozen when stems stop still moving is split by where it was: the pieces of a broken or
+// uprooted stem, or a standing stem's sway. Struck as in a forest (pieces let go, a horizon of
+// 0.1 s), a 25 cm stem broken at 15 m/s stops with its top still moving: all of what is frozen is
+// the pieces'. A 20 cm stem grazed at 3 m/s stands: none of it is.
+TEST(TreeImpact, WhatStopsMovingIsBookedAsPiecesOrStandingSway) {
+    const RunResult broken = launch({"tree.dbh_cm=25", "block.speed_m_s=15", "forest.piece_max_time_s=0",
+                                     "forest.return_horizon_s=0.1"});
+    ASSERT_EQ(broken.impacts.size(), 1u);
+    ASSERT_TRUE(broken.impacts[0].stemBroken);
+    const ForestLedger& b = broken.forestEnergy;
+    std::cout << "broken: frozen " << b.frozen << " J, of which the pieces' " << b.frozenPieces << " J\n";
+    EXPECT_GT(b.frozenPieces, 1000.0) << "a top of several metres stopped while moving";
+    // The rest is the springs to the soil at sleep, J against the top's kJ.
+    EXPECT_LE(b.frozenPieces, b.frozen);
+    EXPECT_GT(b.frozenPieces, 0.99 * b.frozen);
+
+    const RunResult grazed = launch({"tree.dbh_cm=20", "block.speed_m_s=3", "block.eccentricity=0.8",
+                                     "forest.piece_max_time_s=0", "forest.return_horizon_s=0.1"});
+    ASSERT_EQ(grazed.impacts.size(), 1u);
+    ASSERT_FALSE(grazed.impacts[0].stemBroken);
+    ASSERT_FALSE(grazed.impacts[0].rootFailed);
+    EXPECT_EQ(grazed.forestEnergy.frozenPieces, 0.0);
+}
+
 // The default trees (stem.parameters = calibrated: Fig. 3 on 3 sections, wood's constant loss factor,
 // the stem crushing under the block, anchorage from the stem's weight letting go at 25 deg) give the
 // same impact at 0.5 and 0.25 m: the tree's own terms over the impact within the 5 % the issue asks of

@@ -11,7 +11,11 @@ struct ForestLedger {
     double contactFriction = 0;  // block/stem, stem/stem and stem/soil sliding
     double contactDamping = 0;   // the soil's dashpot under stems and broken pieces (Eqs. 14-16)
     double contactCrushing = 0;  // wood crushed under the block (tree_contact.crushing_strength_pa)
-    double frozen = 0;           // kinetic energy of stems put to sleep while still vibrating
+    // Frozen when stems rested or slept still moving: their kinetic energy and their contact springs'.
+    double frozen = 0;
+    // Of which the motion of broken or uprooted stems' pieces (falling, rolling, or pushed by the
+    // block); the rest is what standing stems were left swaying with, and the springs.
+    double frozenPieces = 0;
 
     // The tree's own terms: what the stems themselves took.
     double treeTerms() const { return bendingPlasticity + bendingDamping + axialDamping + rootPlasticity + rupture; }
@@ -20,6 +24,7 @@ struct ForestLedger {
         rootPlasticity += o.rootPlasticity;
         rupture += o.rupture, unloadingGain += o.unloadingGain, contactFriction += o.contactFriction;
         contactDamping += o.contactDamping, contactCrushing += o.contactCrushing, frozen += o.frozen;
+        frozenPieces += o.frozenPieces;
     }
 
     // Books a stem's own terms (sign +1), or takes them back (-1) when the stem is woken again.

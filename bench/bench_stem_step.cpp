@@ -2,7 +2,8 @@
 // stepping): a 20 cm beech on its root spring, swinging (1 m/s at the top), stepped 20 000 times at
 // 0.9 of its stable step, with the default (calibrated) parameters, at each node spacing. The
 // workload does not depend on the trajectory a run happens to take, so two builds compare on the
-// same work. Prints the median over repeats of nanoseconds per node-step and node-steps per second.
+// same work. Prints the median over repeats of nanoseconds per node-step and node-steps per second,
+// then each DBH's stable step on its root spring and clamped.
 //   bench_stem_step [repeats]
 #include <algorithm>
 #include <chrono>
@@ -57,6 +58,15 @@ int main(int argc, char** argv) {
         const double median = quantile(ns, 0.5);
         std::printf("%.3f m: %6.1f ns per node-step (min %.1f, max %.1f), %.2e node-steps/s\n", spacing, median,
                     quantile(ns, 0), quantile(ns, 1), 1e9 / median);
+    }
+    // What the foot's root spring costs the step (docs/performance.md, "Where the rest is"): each
+    // stem's stable step on its root spring, and how much longer it is with the foot clamped.
+    std::printf("stable step at 0.5 m, calibrated set: DBH, on the root spring, clamped / root spring\n");
+    const StemParams calibrated = stemParameters(StemParameterSet::Calibrated);
+    for (const double dbh : {8.0, 10.0, 15.0, 20.0, 30.0, 40.0}) {
+        const double root = Stem(beechStem(dbh), calibrated, Vec3::Zero(), StemFoot::RootSpring).stableTimeStep();
+        const double clamped = Stem(beechStem(dbh), calibrated, Vec3::Zero(), StemFoot::Clamped).stableTimeStep();
+        std::printf("%4.0f cm: %.3e s, x%.2f\n", dbh, root, clamped / root);
     }
     std::printf("(checksum %.6e)\n", sink);
     return 0;

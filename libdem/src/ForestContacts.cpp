@@ -64,7 +64,8 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
         const Stem& s = a.stem;
         // No connection of a stem whose nodes' box, widened by its thickest radius, is out of the
         // block's reach can be within it (the test below, connection by connection).
-        if (widenedNodeBox(s, 0).exteriorDistance(block.position) > block.boundingRadius() + approach) continue;
+        if (!a.nodeBox) a.nodeBox = widenedNodeBox(s, 0);
+        if (a.nodeBox->exteriorDistance(block.position) > block.boundingRadius() + approach) continue;
         std::uint32_t piece = 0;  // pieces of a broken stem move apart: each has its own contacts
         for (std::size_t c = 0; c < s.connectionCount(); ++c) {
             if (s.broken(c)) {

@@ -79,6 +79,9 @@ private:
         double lastOtherContact;    // time of the last detection that found it so
         // Its energy and its ledger's balance while it stands still: the same at every step until it moves.
         std::optional<double> standingBudget;
+        // The box around its nodes the block is first tested against (detectBlockStem), kept while it
+        // is not stepped: most awake stems stand, waiting for the block, and their nodes do not move.
+        std::optional<Eigen::AlignedBox3d> nodeBox;
     };
     // Connections of two awake stems (indices into awake_) close enough to be checked each step.
     struct ConnectionPair {

@@ -150,7 +150,10 @@ void BlockMotion::detectContacts() {
             touch->touching = true;
         }
     }
-    touches_.sweep();
+    // Contacts that ended over the last step: the block's velocity over it, where they were.
+    touches_.sweep([&](SoilTouch& t) {
+        law_.end(t.geometry, block_.velocity + omega.cross(t.geometry.point - block_.position), t.history, lastDt_, ledger_);
+    });
 }
 
 // The stable step of the springs acting now, plus room for `anticipatedContacts` new soil ones; while

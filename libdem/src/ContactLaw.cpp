@@ -33,4 +33,14 @@ Vec3 updateShearForce(const ContactGeometry& g, ContactHistory& h, double kt, do
     return h.shearForce;
 }
 
+void ContactLaw::end(const ContactGeometry& last, const Vec3& relativeVelocity, const ContactHistory& h, double dt,
+                     DissipationLedger& ledger) const {
+    ledger.contactDamping -= 0.5 * h.dampingForce.dot(relativeVelocity) * dt;
+    const Vec3& n = last.normal;
+    const Vec3 vt = relativeVelocity - n * n.dot(relativeVelocity);
+    ContactGeometry open = last;
+    open.overlap = 0;  // what the law stores then is its shear spring's energy alone
+    ledger.friction += storedEnergy(open, h) - 0.5 * h.shearForce.dot(vt) * dt;
+}
+
 }  // namespace sylva::dem

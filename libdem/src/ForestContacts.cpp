@@ -104,7 +104,11 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
             }
         }
     }
-    blockTouches_.sweep();
+    blockTouches_.sweep([&](BlockStemTouch& t) {
+        const Vec3& p = t.geometry.point;
+        const Vec3 v = block.velocity + omega.cross(p - block.position) - connectionVelocity(awake(t.tree)->stem, t.connection, t.t, p);
+        blockStemLaw_->end(t.geometry, v, t.history, lastDt_, contactLedger_);
+    });
     // A contact that moved to another connection may find it much deeper in the block (a bent or
     // lying stem, a contact that began with an offset): like a new contact, it takes on only the
     // overlap one step's motion can bring, or its spring would store energy no motion loaded.
@@ -226,7 +230,12 @@ void ForestMotion::detectStemStem() {
         touch->t = t;
         touch->touching = true;
     }
-    stemTouches_.sweep();
+    stemTouches_.sweep([&](StemStemTouch& t) {
+        const Vec3& p = t.geometry.point;
+        const Vec3 v = connectionVelocity(awake(t.treeA)->stem, t.connectionA, t.s, p) -
+                       connectionVelocity(awake(t.treeB)->stem, t.connectionB, t.t, p);
+        stemStemLaw_->end(t.geometry, v, t.history, lastDt_, contactLedger_);
+    });
 }
 
 void ForestMotion::detectStemSoil() {
@@ -265,7 +274,11 @@ void ForestMotion::detectStemSoil() {
             }
         }
     }
-    soilTouches_.sweep();
+    soilTouches_.sweep([&](StemSoilTouch& t) {
+        const Stem& s = awake(t.tree)->stem;
+        const Vec3 v = s.velocity[t.node] + s.angularVelocity[t.node].cross(t.geometry.point - s.position[t.node]);
+        stemSoilLaw_->end(t.geometry, v, t.history, lastDt_, contactLedger_);
+    });
 }
 
 }  // namespace sylva::dem

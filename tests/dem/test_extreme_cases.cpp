@@ -197,11 +197,14 @@ TEST(ExtremeBlocks, HeavyAndTinyBlocksRunDownASlope) {
 
 // 40 m/s into a 25 cm stem: 1.08 MJ, far beyond what it takes to break the stem
 // (TreeImpact.StemBreaksOnlyWhenTheBlockCarriesEnoughEnergy). Skimming the soil bumps at 35 m/s
-// after the impact, the block makes many contact onsets per second: each misses part of a step's
-// spring work, and the budget closes to first order in the step. The broken top falls and lands
-// on the soil while the block runs on (a broken stem sleeps only once its pieces rest), so the
-// stems' step is refined with the block's.
-TEST(ExtremeSpeed, FortyMetresPerSecondBreaksTheStemAndTheBudgetConverges) {
+// after the impact, the block makes and ends many contacts per second. While contact ends went
+// unbooked (their dashpot's and shear spring's last half step, ContactLaw::end), the budget closed
+// to first order in the step: 4.5e-3 at the default, 1.8e-3 at a quarter of it. What is left is
+// the onsets' and the normal springs' exits, of second order per contact: a tenth of the 1 % the
+// issue asks of an impact's budget at the default step, as at the fine one. The broken top falls
+// and lands on the soil while the block runs on (a broken stem sleeps only once its pieces rest),
+// so the stems' step is refined with the block's.
+TEST(ExtremeSpeed, FortyMetresPerSecondBreaksTheStemAndTheBudgetCloses) {
     const RunResult coarse = run(singleTree({"block.speed_m_s=40"}));
     const RunResult fine = run(singleTree({"block.speed_m_s=40", "integration.safety=0.075", "integration.stem_safety=0.2"}));
     std::printf("40 m/s: imbalance %.2e at safety 0.3 (stems 0.8), %.2e at 0.075 (stems 0.2); block keeps %.0f of %.0f J\n", coarse.energy.imbalance,
@@ -213,8 +216,8 @@ TEST(ExtremeSpeed, FortyMetresPerSecondBreaksTheStemAndTheBudgetConverges) {
         EXPECT_LT(r->energy.imbalance, kTolerance);
     }
     expectSound(fine, "40 m/s, safety 0.075");
-    // First order: a 4 times smaller step must at least halve the error.
-    EXPECT_LT(fine.energy.imbalance, coarse.energy.imbalance / 2);
+    EXPECT_LT(coarse.energy.imbalance, 1e-3);
+    EXPECT_LT(fine.energy.imbalance, 1e-3);
 }
 
 TEST(ExtremeSpeed, BlockHittingFlatGroundAtFortyMetresPerSecondStops) {

@@ -50,6 +50,16 @@ public:
     virtual double dampingCoefficientAt(const ContactGeometry&) const { return dampingCoefficient(); }
     // The stiffest this law is anywhere, for the room a step leaves for contacts still to come.
     virtual double largestNormalStiffness() const { return normalStiffness(ContactGeometry{}); }
+
+    // A contact found at the last step and not at this one ended in the step between (of length dt,
+    // over which A's material point moved at relativeVelocity from B's). The leapfrog applied its
+    // last forces over the half of that step after them, as it does at every step, and the law books
+    // that half as it books any step, by the trapezoid rule with the force then zero: the dashpot's
+    // work, and the shear spring's energy, which slips out entirely as the Coulomb cone closes with
+    // the normal force. Unbooked, they were the block's largest energy imbalance: 2.2 % of a run,
+    // first order in the step (docs/accuracy.md, "Energy audit").
+    void end(const ContactGeometry& last, const Vec3& relativeVelocity, const ContactHistory& h, double dt,
+             DissipationLedger& ledger) const;
 };
 
 // The incremental tangential spring with Coulomb limit shared by all laws (Eqs. 17-19):

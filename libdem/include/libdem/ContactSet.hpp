@@ -49,6 +49,13 @@ public:
     void sweep() {
         eraseIf([](const Touch& t) { return !t.touching; });
     }
+    // The same, telling `ended` of each first (ContactLaw::end books what their last forces did).
+    template <class OnEnd>
+    void sweep(OnEnd ended) {
+        for (Touch& t : touches_)
+            if (!t.touching) ended(t);
+        sweep();
+    }
     template <class Predicate>
     void eraseIf(Predicate ended) {
         std::size_t kept = 0;

@@ -361,6 +361,11 @@ void ForestMotion::sleep(const RigidBody& block, double t) {
             if (c.tree == tree) slept_.frozen += stemSoilLaw_->storedEnergy(c.geometry, c.history);
         for (const auto& c : stemTouches_)
             if (!c.ignored && (c.treeA == tree || c.treeB == tree)) slept_.frozen += stemStemLaw_->storedEnergy(c.geometry, c.history);
+        // The block's too, left from its last touch when the wait (forest.sleep_after_s) is shorter
+        // than a step: the next detection would find their stem gone.
+        for (const auto& c : blockTouches_)
+            if (c.tree == tree) slept_.frozen += blockStemLaw_->storedEnergy(c.geometry, c.history);
+        blockTouches_.eraseIf([tree](const BlockStemTouch& c) { return c.tree == tree; });
         soilTouches_.eraseIf([tree](const StemSoilTouch& c) { return c.tree == tree; });
         stemTouches_.eraseIf([tree](const StemStemTouch& c) { return c.treeA == tree || c.treeB == tree; });
         asleep_.emplace(tree, std::move(s));

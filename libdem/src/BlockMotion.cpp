@@ -82,7 +82,7 @@ BlockMotion::BlockMotion(const Scene& scene, const Release& start)
 }
 
 double BlockMotion::step() {
-    PhaseClock clock(phases_);
+    PhaseClock clock(phases_, steps_);
     updateCentres();
     detectContacts();
     clock.lap(StepPhase::BlockSoil);

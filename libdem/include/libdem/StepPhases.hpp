@@ -2,8 +2,9 @@
 // Where a simulation step's time goes, phase by phase, the way Box2D v3 times each stage of
 // b2World_Step: a forested run's cost is read off its phases (summary.json "time_by_phase_s",
 // bench/bench_forest) instead of guessed. Wall time of the running thread, from a steady clock read
-// at each phase's end: 11 reads a step, lost in the noise of 30 MO1 A runs timed with and without
-// them (CPU ratio 0.97 and 1.03 in two repeats; docs/performance.md).
+// at each phase's end: 11 reads a step, which perf put at 3.4 % of a forested run when every step was
+// timed. One step in kTimedStepEvery is timed, and counts for that many: a systematic sample of
+// tens of thousands of steps a run (docs/performance.md, "The phase clock sampled").
 #include <array>
 #include <chrono>
 #include <cstddef>
@@ -55,19 +56,26 @@ struct NodeSteps {
     NodeSteps& operator+=(const NodeSteps& other);
 };
 
-// Laps a steady clock over a step: each lap books the time since the previous one to the phase that
-// just ended.
+inline constexpr long kTimedStepEvery = 8;
+
+// Laps a steady clock over a step: each lap books the time since the previous one, times
+// kTimedStepEvery, to the phase that just ended. Step number `step` is timed only if it is a multiple
+// of kTimedStepEvery; on the other steps lap() does nothing.
 class PhaseClock {
 public:
-    explicit PhaseClock(PhaseTimes& times) : times_(times), last_(std::chrono::steady_clock::now()) {}
+    PhaseClock(PhaseTimes& times, long step) : times_(times), timed_(step % kTimedStepEvery == 0) {
+        if (timed_) last_ = std::chrono::steady_clock::now();
+    }
     void lap(StepPhase ended) {
+        if (!timed_) return;
         const auto now = std::chrono::steady_clock::now();
-        times_[ended] += std::chrono::duration<double>(now - last_).count();
+        times_[ended] += kTimedStepEvery * std::chrono::duration<double>(now - last_).count();
         last_ = now;
     }
 
 private:
     PhaseTimes& times_;
+    bool timed_;
     std::chrono::steady_clock::time_point last_;
 };
 

@@ -64,7 +64,10 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
         const Stem& s = a.stem;
         // No connection of a stem whose nodes' box, widened by its thickest radius, is out of the
         // block's reach can be within it (the test below, connection by connection).
-        if (!a.nodeBox) a.nodeBox = widenedNodeBox(s, 0);
+        if (!a.nodeBox) {
+            a.nodeBox = widenedNodeBox(s, 0);
+            a.nodeBoxSlack = 0;
+        }
         if (a.nodeBox->exteriorDistance(block.position) > block.boundingRadius() + approach) continue;
         std::uint32_t piece = 0;  // pieces of a broken stem move apart: each has its own contacts
         for (std::size_t c = 0; c < s.connectionCount(); ++c) {
@@ -80,8 +83,14 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
             for (std::uint32_t i = 0; i < centres.size(); ++i) {
                 const double rb = block.spheres()[i].radius;
                 const double t = closestOnSegment(centres[i], a0, a1);
+                const Vec3 axisPoint = a0 + t * (a1 - a0);
+                // Farther than rb + r + approach, the sphere neither touches nor sets the stem moving
+                // (the tests below); told from the squared distance, without the root (with a margin
+                // far above rounding, so that the test below decides every case near the bound).
+                const double within = rb + r + approach;
+                if ((centres[i] - axisPoint).squaredNorm() > within * within * (1 + 1e-9)) continue;
                 ContactGeometry found;
-                const bool touching = touchSpheres(centres[i], rb, a0 + t * (a1 - a0), r, found);
+                const bool touching = touchSpheres(centres[i], rb, axisPoint, r, found);
                 const double overlap = found.overlap;
                 if (overlap > -approach) a.moving = true;
                 if (!touching) continue;

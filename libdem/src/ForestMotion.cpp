@@ -69,7 +69,7 @@ void ForestMotion::wake(std::uint32_t tree, double t) {
     const bool broken = falling(stem);
     // The all-awake reference steps every stem, standing or not.
     awakeSlot_[tree] = awake_.size();
-    awake_.push_back(AwakeStem{tree, std::move(stem), {}, stability, t, broken, cfg_.activity.allAwake, StemAwake::Waiting, {}, {}, false, false, -std::numeric_limits<double>::infinity(), std::nullopt, std::nullopt});
+    awake_.push_back(AwakeStem{tree, std::move(stem), {}, stability, t, broken, cfg_.activity.allAwake, StemAwake::Waiting, {}, {}, false, false, -std::numeric_limits<double>::infinity(), std::nullopt, std::nullopt, 0});
     stemPairsStale_ = true;
 }
 
@@ -296,7 +296,13 @@ void ForestMotion::integrate(double dt) {
         if (a.onSoilOrStem) nodeSteps_.onSoilOrStem += a.stem.nodeCount();
         const double externalBefore = a.stem.ledger.externalWork;
         const StemEnergy e = stepper_.step(a.stem, dt, a.loads);
-        a.nodeBox.reset();
+        a.nodeBoxSlack += e.farthestMove;
+        if (a.nodeBox && a.nodeBoxSlack <= kNodeBoxSlack) {
+            const Vec3 widen = Vec3::Constant(e.farthestMove);
+            a.nodeBox = Eigen::AlignedBox3d(a.nodeBox->min() - widen, a.nodeBox->max() + widen);
+        } else {
+            a.nodeBox.reset();
+        }
         // The stem's own budget without the work of the contact loads, which the contacts' springs
         // and the block account for: energy + dissipated - created, at the step's start.
         stems += e.total() + e.netLoss + 0.5 * (externalBefore + a.stem.ledger.externalWork);

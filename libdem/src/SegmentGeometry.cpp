@@ -5,13 +5,6 @@
 
 namespace sylva::dem {
 
-double closestOnSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
-    const Vec3 ab = b - a;
-    const double len2 = ab.squaredNorm();
-    if (len2 <= 0) return 0;
-    return std::clamp((p - a).dot(ab) / len2, 0.0, 1.0);
-}
-
 std::pair<double, double> closestBetweenSegments(const Vec3& a0, const Vec3& a1, const Vec3& b0, const Vec3& b1) {
     // Minimise |a0 + s u - b0 - t v|^2 over the unit square: the interior stationary point if it
     // lies inside, else the best of the edges (each a point-segment problem).

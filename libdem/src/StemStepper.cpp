@@ -1,5 +1,7 @@
 #include "libdem/StemStepper.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -47,6 +49,7 @@ StemEnergy StemStepper::step(Stem& stem, double dt, const StemLoads& loads) {
     const std::vector<double>& inertia = stem.inertia();
     StemLedger& ledger = stem.ledger;
     const double rate = relaxationRate_;
+    double farthest2 = 0;
     for (std::size_t i = 0; i < n; ++i) {
         e.potential -= mass[i] * gravity_.dot(stem.position[i]);
         if (stem.translates(i)) {
@@ -58,6 +61,7 @@ StemEnergy StemStepper::step(Stem& stem, double dt, const StemLoads& loads) {
             v += dt * stem.inverseMass()[i] * f;
             e.kinetic += 0.125 * mass[i] * (before + v).squaredNorm();
             const Vec3 dx = dt * v;
+            farthest2 = std::max(farthest2, dx.squaredNorm());
             if (hasForce) ledger.externalWork += loads.force[i].dot(dx);
             ledger.relaxation += rate * mass[i] * before.dot(dx);
             stem.position[i] += dx;
@@ -79,11 +83,17 @@ StemEnergy StemStepper::step(Stem& stem, double dt, const StemLoads& loads) {
             // without the root and the division normalized() takes.
             q.coeffs() *= 0.5 * (3 - q.coeffs().squaredNorm());
         }
-        if (!stem.position[i].allFinite() || !stem.velocity[i].allFinite() || !stem.angularVelocity[i].allFinite())
-            throw SimulationError("stem node " + std::to_string(i) + " became NaN (time step " + std::to_string(dt) +
-                                  " s; stable limit " + std::to_string(stem.stableTimeStep()) + " s)");
+    }
+    // One test for all the nodes: a NaN or infinite velocity makes the kinetic energy so, and finite
+    // velocities (their squares finite, so under 1e154 m/s) move finite nodes to finite places.
+    if (!std::isfinite(e.kinetic)) {
+        std::size_t i = 0;
+        while (i + 1 < n && stem.velocity[i].allFinite() && stem.angularVelocity[i].allFinite()) ++i;
+        throw SimulationError("stem node " + std::to_string(i) + " became NaN (time step " + std::to_string(dt) +
+                              " s; stable limit " + std::to_string(stem.stableTimeStep()) + " s)");
     }
     e.netLoss = netLoss(before, ledger);
+    e.farthestMove = std::sqrt(farthest2);
     return e;
 }
 

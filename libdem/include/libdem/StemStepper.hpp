@@ -24,6 +24,7 @@ struct StemLoads {
 struct StemEnergy {
     double kinetic = 0, elastic = 0, potential = 0;
     double netLoss = 0;
+    double farthestMove = 0;  // m: the longest way a node went over the step
     double total() const { return kinetic + elastic + potential; }
 };
 

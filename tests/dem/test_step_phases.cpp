@@ -44,18 +44,21 @@ TEST(StepPhases, OneStepInEveryFewIsTimedForAllOfThem) {
 }
 
 // The phases are a sample of the steps (one in kTimedStepEvery) scaled up, so together they estimate
-// the time spent stepping, most of the run's own time measured around it. The run takes ~2e4 steps,
-// ~2.5e3 of them timed: the sample's relative error is about the steps' spread in cost (of the order
-// of their mean) over 50, so 10 % above the run's time is several standard errors away. The block hits
-// the tree, so the stems' phase and the block/stem contacts took time.
+// the time spent stepping, most of the run's own time measured around it. Not within a few per cent
+// of it: a timed step the scheduler interrupts counts kTimedStepEvery times, which on this ~0.15 s run
+// under a loaded ctest -j2 was seen to add 2 % and could add 50 % for each 10 ms time slice lost. The
+// bounds catch a scale off by kTimedStepEvery (a sampled lap counted once gives 1/8 of the time, scaled
+// twice 8 times it) rather than the sampling error, which OneStepInEveryFewIsTimedForAllOfThem checks
+// exactly. The block hits the tree, so the stems'
+// phase and the block/stem contacts took time.
 TEST(StepPhases, PhasesEstimateTheRunsTimeAndTheTreeIsStepped) {
     const Scene scene(loadScene(std::string(SYLVAROCK_DATA) + "/scenes/single-tree.ini", {"stop.max_time_s=3"}));
     const auto t0 = std::chrono::steady_clock::now();
     const RunResult r = simulateBlock(scene, 0, 1);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     ASSERT_FALSE(r.impacts.empty());
-    EXPECT_GT(r.phases.total(), 0.5 * wall);
-    EXPECT_LE(r.phases.total(), 1.1 * wall);
+    EXPECT_GT(r.phases.total(), 0.4 * wall);
+    EXPECT_LT(r.phases.total(), 3 * wall);
     for (const double s : r.phases.seconds) EXPECT_GE(s, 0.0);
     EXPECT_GT(r.phases[StepPhase::Stems], 0.0);
     EXPECT_GT(r.phases[StepPhase::BlockStem], 0.0);

@@ -51,7 +51,7 @@ struct SingleTreeConfig {
 
 struct IntegrationConfig {
     double safety = 0.3;        // dt = safety x stable limit of the block's springs
-    double stemSafety = 0.8;    // and at most stemSafety x the awake stems' limit with their contacts (Stem::stability: within 2 % of a calibrated stem's own)
+    double stemSafety = 0.95;   // and at most stemSafety x the awake stems' limit with their contacts (Stem::stability: within 2 % of a calibrated stem's own)
     double forcedDt = 0;        // > 0: use this step (refused if above the stable limit)
     int anticipatedContacts = 4;  // the step stays stable for this many new contacts at once
     double energyTolerance = 0.1;  // audit: relative energy growth that stops a run (SimulationError)
@@ -68,7 +68,7 @@ struct StopConfig {
 struct ForestActivity {
     double wakeMargin = 0.1;    // m: a stem wakes when the block's bounding sphere comes this close (plus one step's travel)
     double returnHorizon = 0.1;  // s: a moving stem the block cannot reach within this time stops where it stands
-    double sleepAfter = 0.3;    // s without block contact, the block out of reach, before a stem sleeps again
+    double sleepAfter = 0.1;    // s without block contact, the block out of reach, before a stem sleeps again
     // A broken stem's pieces fall on: it sleeps only once every node is slower than this, m/s,
     double pieceRestSpeed = 0.2;
     // or this long after the block's last contact, s (a piece rolling downslope). 0: a broken stem

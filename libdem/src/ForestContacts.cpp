@@ -79,7 +79,8 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
             const Vec3& a1 = s.position[c + 1];
             const double r = 0.5 * s.connectionDiameter(c);
             const double tc = closestOnSegment(block.position, a0, a1);
-            if ((block.position - (a0 + tc * (a1 - a0))).norm() > block.boundingRadius() + r + approach) continue;
+            const double within = block.boundingRadius() + r + approach;  // squared, as for the spheres below
+            if ((block.position - (a0 + tc * (a1 - a0))).squaredNorm() > within * within * (1 + 1e-9)) continue;
             for (std::uint32_t i = 0; i < centres.size(); ++i) {
                 const double rb = block.spheres()[i].radius;
                 const double t = closestOnSegment(centres[i], a0, a1);

@@ -23,6 +23,11 @@ Eigen::AlignedBox3d widenedNodeBox(const Stem& s, double margin) {
     return Eigen::AlignedBox3d(box.min() - widen, box.max() + widen);
 }
 
+// Whether a point at squared distance `distance2` lies farther than `reach`, told without the root.
+// The margin, far above rounding, leaves every case near the bound to the exact tests that follow,
+// so that skipping on it changes nothing those tests would decide.
+bool beyondReach(double distance2, double reach) { return distance2 > reach * reach * (1 + 1e-9); }
+
 // History of a contact first seen at this overlap. Stems are checked against each other only
 // while awake, so a stem can be woken into a neighbour that already bent into it; the part of the
 // overlap no step's motion could explain (kMaxOnsetOverlap) becomes an offset the spring starts from.
@@ -79,17 +84,14 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
             const Vec3& a1 = s.position[c + 1];
             const double r = 0.5 * s.connectionDiameter(c);
             const double tc = closestOnSegment(block.position, a0, a1);
-            const double within = block.boundingRadius() + r + approach;  // squared, as for the spheres below
-            if ((block.position - (a0 + tc * (a1 - a0))).squaredNorm() > within * within * (1 + 1e-9)) continue;
+            if (beyondReach((block.position - (a0 + tc * (a1 - a0))).squaredNorm(), block.boundingRadius() + r + approach))
+                continue;
             for (std::uint32_t i = 0; i < centres.size(); ++i) {
                 const double rb = block.spheres()[i].radius;
                 const double t = closestOnSegment(centres[i], a0, a1);
                 const Vec3 axisPoint = a0 + t * (a1 - a0);
-                // Farther than rb + r + approach, the sphere neither touches nor sets the stem moving
-                // (the tests below); told from the squared distance, without the root (with a margin
-                // far above rounding, so that the test below decides every case near the bound).
-                const double within = rb + r + approach;
-                if ((centres[i] - axisPoint).squaredNorm() > within * within * (1 + 1e-9)) continue;
+                // Farther than rb + r + approach, the sphere neither touches nor sets the stem moving.
+                if (beyondReach((centres[i] - axisPoint).squaredNorm(), rb + r + approach)) continue;
                 ContactGeometry found;
                 const bool touching = touchSpheres(centres[i], rb, axisPoint, r, found);
                 const double overlap = found.overlap;

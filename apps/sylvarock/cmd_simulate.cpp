@@ -71,6 +71,7 @@ std::optional<Simulation> readSimulation(int argc, const char* const* argv) {
         ("trajectory", po::bool_switch(), "also write sampled trajectories (CSV and VTK) to OUT/trajectories/")
         ("block", po::value<std::string>(), "block shape override: cube | cuboid | sphere")
         ("set", po::value(&sets)->composing(), "override a scene key: --set section.key=value (repeatable)")
+        ("only-run", po::value<std::vector<int>>()->composing(), "run only this run of the campaign, seeded as in the whole one (repeatable; numbered as in runs.csv and the error messages): to look again at a run that stopped")
         ("no-figures", po::bool_switch(), "do not draw the SVG figures")
         ("help-scene", po::bool_switch(), "list every scene key with its default and meaning");
     po::variables_map vm;
@@ -105,6 +106,13 @@ std::optional<Simulation> readSimulation(int argc, const char* const* argv) {
     if (c.model == dem::Model::Lumped && sim.scene->config().launch.enabled)
         throw InputError("--model lumped follows blocks down a slope; a single-tree launch (block.speed_m_s) needs the DEM");
     c.seed = vm["seed"].as<Seed>().value;
+    if (vm.count("only-run"))
+        for (const int i : vm["only-run"].as<std::vector<int>>()) {
+            if (i < 0 || i >= c.runs)
+                throw InputError("--only-run " + std::to_string(i) + ": the campaign's runs are numbered 0 to " +
+                                 std::to_string(c.runs - 1) + " (--runs " + std::to_string(c.runs) + ")");
+            c.only.push_back(i);
+        }
     c.threads = threadCount(vm);
     c.run.recordTrajectory = vm["trajectory"].as<bool>();
     return sim;
@@ -173,6 +181,7 @@ int runSimulate(int argc, const char* const* argv) {
         for (const auto& r : results)
             if (r.reason == dem::StopReason::Failed && shown++ < 3)
                 std::cerr << "  run " << r.run << " (seed " << r.seed << "): " << r.failure << "\n";
+        std::cerr << "  (to run one again alone, with the same options: --only-run N)\n";
         return kRunsFailed;
     }
     return 0;

@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "DemTestScenes.hpp"
 #include "libcommon/InputError.hpp"
@@ -102,6 +104,46 @@ TEST(SimulateCli, WritesRunsSummaryAndTrajectories) {
     for (const char* key : {"\"dist50_m\"", "\"energy_line_deg\"", "\"runs\"", "\"wall_s\""})
         EXPECT_NE(summary.find(key), std::string::npos) << key;
     EXPECT_TRUE(std::filesystem::exists(out / "trajectories" / "run_0002.vtk"));
+}
+
+// --only-run runs one run of a campaign again, seeded as in the whole campaign: its row is the
+// same as the whole campaign's, field for field but the CPU time.
+TEST(SimulateCli, OnlyRunRepeatsThatRunOfTheCampaign) {
+    const auto dir = std::filesystem::temp_directory_path() / "sylvarock-tests";
+    const std::string base = std::string("simulate --scene ") + SYLVAROCK_DATA + "/scenes/no-forest.ini --runs 3 --seed 5 --no-figures ";
+    std::filesystem::remove_all(dir / "only-all");
+    std::filesystem::remove_all(dir / "only-one");
+    ASSERT_EQ(cli(base + "--out " + (dir / "only-all").string()), 0);
+    ASSERT_EQ(cli(base + "--only-run 2 --out " + (dir / "only-one").string()), 0);
+    const auto rows = [](const std::string& csv) {
+        std::vector<std::string> out;
+        std::istringstream in(csv);
+        std::string line;
+        std::getline(in, line);  // header
+        while (std::getline(in, line)) out.push_back(line);
+        return out;
+    };
+    const std::string header = slurp((dir / "only-all" / "runs.csv").string());
+    const auto all = rows(header), one = rows(slurp((dir / "only-one" / "runs.csv").string()));
+    ASSERT_EQ(all.size(), 3u);
+    ASSERT_EQ(one.size(), 1u);
+    const auto fields = [](const std::string& row) {
+        std::vector<std::string> f;
+        std::istringstream in(row);
+        std::string x;
+        while (std::getline(in, x, ',')) f.push_back(x);
+        return f;
+    };
+    std::vector<std::string> names = fields(header.substr(0, header.find('\n')));
+    const auto a = fields(all[2]), b = fields(one[0]);
+    ASSERT_EQ(a.size(), names.size());
+    ASSERT_EQ(b.size(), names.size());
+    for (std::size_t k = 0; k < names.size(); ++k) {
+        if (names[k] == "cpu_s") continue;
+        EXPECT_EQ(a[k], b[k]) << names[k];
+    }
+    EXPECT_NE(cli(base + "--only-run 3 --out " + (dir / "only-bad").string()), 0);
+    EXPECT_NE(cli(base + "--only-run -1 --out " + (dir / "only-bad").string()), 0);
 }
 
 TEST(SimulateCli, BadSceneKeyIsRefusedWithItsName) {

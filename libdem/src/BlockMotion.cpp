@@ -174,7 +174,8 @@ double BlockMotion::timeStep() {
                                   " s; use a smaller step or 0 (automatic)");
         return forced;
     }
-    return std::min(cfg_.integration.safety * s.critical(), cfg_.integration.stemSafety * stems);
+    // The block's own bound, at its low safety (0.3), stays far from the resonance StepHold avoids.
+    return std::min(cfg_.integration.safety * s.critical(), stemStep_.next(cfg_.integration.stemSafety * stems));
 }
 
 // Audited at t, where positions and contact springs are: the leapfrog's velocities are half a step

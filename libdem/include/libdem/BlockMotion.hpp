@@ -8,6 +8,7 @@
 #include "libdem/BlockRun.hpp"
 #include "libdem/ContactSet.hpp"
 #include "libdem/ForestMotion.hpp"
+#include "libdem/StepHold.hpp"
 #include "libdem/StepPhases.hpp"
 
 namespace sylva::dem {
@@ -60,6 +61,7 @@ private:
     std::vector<std::uint32_t> candidates_;
     ContactSet<SoilTouch> touches_;
     double anticipatedStiffness_ = 0;
+    StepHold stemStep_;  // the stems' step, held against a chattering bound
     DissipationLedger ledger_;
     EnergyBudget budget_;
     ForestMotion forest_;

@@ -15,7 +15,7 @@ namespace sylva::dem {
 // bound of those: a contact that comes and goes holds the step at its lower value.
 class StepHold {
 public:
-    static constexpr int kRiseAfter = 20;  // steps; 5 still let a chattering contact through (docs/performance.md)
+    static constexpr int kRiseAfter = 20;  // steps; 5 still let a chattering contact through (docs/accuracy.md)
 
     // The step to take, given this step's bound (infinity: no limit from this side).
     double next(double bound);

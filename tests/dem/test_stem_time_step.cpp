@@ -8,47 +8,20 @@
 
 #include <Eigen/Dense>
 #include <cstdio>
-#include <random>
 
+#include "StemEnergyGrowth.hpp"
 #include "libdem/RotationVector.hpp"
-#include "libdem/SimulationError.hpp"
 #include "libdem/Stem.hpp"
 #include "libdem/StemParameterSet.hpp"
-#include "libdem/StemStepper.hpp"
 
 using namespace sylva::dem;
 
 namespace {
 
-// How much the stem's energy grew over `steps` steps: its peak over the last tenth of them against
-// its peak over the first tenth; infinity if the state became NaN. Peaks, because near the limit a
-// leapfrog's energy, read with the velocities brought to the step's time, swings by up to
-// 1 / (1 - (omega dt / 2)^2) over each period of a stable mode without growing.
+// How much the stem's energy grew over `steps` steps at `factor` times its bound (StemEnergyGrowth.hpp).
 double energyGrowth(const StemParams& p, double factor, StemFoot foot, int steps) {
-    Stem stem(beechStem(20), p, Vec3::Zero(), foot);
-    std::mt19937 rng(3);
-    std::normal_distribution<double> normal;
-    const auto random = [&] { return Vec3(normal(rng), normal(rng), normal(rng)); };
-    for (std::size_t i = 0; i < stem.nodeCount(); ++i) {
-        if (stem.translates(i)) stem.velocity[i] = 1e-3 * random();
-        if (stem.rotates(i)) stem.angularVelocity[i] = 1e-3 * random();
-    }
-    StemStepper stepper(Vec3::Zero());
-    const double dt = factor * stem.stableTimeStep();
-    const int window = steps / 10;
-    double start = 0, first = 0, last = 0;
-    try {
-        for (int k = 0; k < steps; ++k) {
-            const double e = stepper.step(stem, dt).total();
-            if (k == 0) start = e;
-            if (!(e < 1e6 * start)) return INFINITY;  // blown up, maybe within the first window
-            if (k < window) first = std::max(first, e);
-            if (k >= steps - window) last = std::max(last, e);
-        }
-    } catch (const SimulationError&) {
-        return INFINITY;
-    }
-    return last / first;
+    return sylva::dem::testing::stemEnergyGrowth(Stem(beechStem(20), p, Vec3::Zero(), foot),
+                                                 [factor](int, double bound) { return factor * bound; }, steps, 3);
 }
 
 StemParams viscous(double tau) {

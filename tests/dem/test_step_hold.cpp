@@ -5,15 +5,12 @@
 // modes near omega dt = sqrt(2)); the held step keeps it bounded.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <functional>
-#include <random>
 
-#include "libdem/SimulationError.hpp"
+#include "StemEnergyGrowth.hpp"
 #include "libdem/StepHold.hpp"
 #include "libdem/Stem.hpp"
 #include "libdem/StemParameterSet.hpp"
-#include "libdem/StemStepper.hpp"
 
 using namespace sylva::dem;
 
@@ -31,36 +28,11 @@ TEST(StepHold, DropsAtOnceAndRisesOnlyAfterTheBoundAllowedItLongEnough) {
 
 namespace {
 
-// Growth of a stem's energy over `steps` steps taken as `step(k)` says: its peak over the last tenth
-// against its peak over the first (peaks: a leapfrog's energy swings within each period near the
-// limit without growing); infinity if it blew up.
+// A stem whose bound is tight (wood's axial stiffness), stepped as `step` says (StemEnergyGrowth.hpp).
 double energyGrowth(const std::function<double(int, double)>& step, int steps) {
     StemParams p = stemParameters(StemParameterSet::Calibrated);
     p.axialSoftening = 1;
-    Stem stem(beechStem(20), p, Vec3::Zero(), StemFoot::Clamped);
-    std::mt19937 rng(5);
-    std::normal_distribution<double> normal;
-    const auto random = [&] { return Vec3(normal(rng), normal(rng), normal(rng)); };
-    for (std::size_t i = 0; i < stem.nodeCount(); ++i) {
-        if (stem.translates(i)) stem.velocity[i] = 1e-3 * random();
-        if (stem.rotates(i)) stem.angularVelocity[i] = 1e-3 * random();
-    }
-    StemStepper stepper(Vec3::Zero());
-    const double bound = stem.stableTimeStep();
-    const int window = steps / 10;
-    double start = 0, first = 0, last = 0;
-    try {
-        for (int k = 0; k < steps; ++k) {
-            const double e = stepper.step(stem, step(k, bound)).total();
-            if (k == 0) start = e;
-            if (!(e < 1e6 * start)) return INFINITY;
-            if (k < window) first = std::max(first, e);
-            if (k >= steps - window) last = std::max(last, e);
-        }
-    } catch (const SimulationError&) {
-        return INFINITY;
-    }
-    return last / first;
+    return sylva::dem::testing::stemEnergyGrowth(Stem(beechStem(20), p, Vec3::Zero(), StemFoot::Clamped), step, steps, 5);
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "DemTestScenes.hpp"
+#include "libcommon/CsvTable.hpp"
 #include "libcommon/InputError.hpp"
 #include "libdem/Campaign.hpp"
 #include "libdem/CampaignSummary.hpp"
@@ -115,32 +116,14 @@ TEST(SimulateCli, OnlyRunRepeatsThatRunOfTheCampaign) {
     std::filesystem::remove_all(dir / "only-one");
     ASSERT_EQ(cli(base + "--out " + (dir / "only-all").string()), 0);
     ASSERT_EQ(cli(base + "--only-run 2 --out " + (dir / "only-one").string()), 0);
-    const auto rows = [](const std::string& csv) {
-        std::vector<std::string> out;
-        std::istringstream in(csv);
-        std::string line;
-        std::getline(in, line);  // header
-        while (std::getline(in, line)) out.push_back(line);
-        return out;
-    };
-    const std::string header = slurp((dir / "only-all" / "runs.csv").string());
-    const auto all = rows(header), one = rows(slurp((dir / "only-one" / "runs.csv").string()));
-    ASSERT_EQ(all.size(), 3u);
-    ASSERT_EQ(one.size(), 1u);
-    const auto fields = [](const std::string& row) {
-        std::vector<std::string> f;
-        std::istringstream in(row);
-        std::string x;
-        while (std::getline(in, x, ',')) f.push_back(x);
-        return f;
-    };
-    std::vector<std::string> names = fields(header.substr(0, header.find('\n')));
-    const auto a = fields(all[2]), b = fields(one[0]);
-    ASSERT_EQ(a.size(), names.size());
-    ASSERT_EQ(b.size(), names.size());
-    for (std::size_t k = 0; k < names.size(); ++k) {
-        if (names[k] == "cpu_s") continue;
-        EXPECT_EQ(a[k], b[k]) << names[k];
+    const sylva::CsvTable all = sylva::CsvTable::read((dir / "only-all" / "runs.csv").string());
+    const sylva::CsvTable one = sylva::CsvTable::read((dir / "only-one" / "runs.csv").string());
+    ASSERT_EQ(all.rows(), 3u);
+    ASSERT_EQ(one.rows(), 1u);
+    ASSERT_EQ(all.header(), one.header());
+    for (std::size_t col = 0; col < all.header().size(); ++col) {
+        if (all.header()[col] == "cpu_s") continue;
+        EXPECT_EQ(all.text(2, col), one.text(0, col)) << all.header()[col];
     }
     EXPECT_NE(cli(base + "--only-run 3 --out " + (dir / "only-bad").string()), 0);
     EXPECT_NE(cli(base + "--only-run -1 --out " + (dir / "only-bad").string()), 0);

@@ -111,6 +111,8 @@ std::optional<Simulation> readSimulation(int argc, const char* const* argv) {
             if (i < 0 || i >= c.runs)
                 throw InputError("--only-run " + std::to_string(i) + ": the campaign's runs are numbered 0 to " +
                                  std::to_string(c.runs - 1) + " (--runs " + std::to_string(c.runs) + ")");
+            if (std::find(c.only.begin(), c.only.end(), i) != c.only.end())
+                throw InputError("--only-run " + std::to_string(i) + " is given twice: its row would count twice in the statistics");
             c.only.push_back(i);
         }
     c.threads = threadCount(vm);

@@ -127,6 +127,7 @@ TEST(SimulateCli, OnlyRunRepeatsThatRunOfTheCampaign) {
     }
     EXPECT_NE(cli(base + "--only-run 3 --out " + (dir / "only-bad").string()), 0);
     EXPECT_NE(cli(base + "--only-run -1 --out " + (dir / "only-bad").string()), 0);
+    EXPECT_NE(cli(base + "--only-run 1 --only-run 1 --out " + (dir / "only-bad").string()), 0);
 }
 
 TEST(SimulateCli, BadSceneKeyIsRefusedWithItsName) {

@@ -174,7 +174,7 @@ double BlockMotion::timeStep() {
                                   " s; use a smaller step or 0 (automatic)");
         return forced;
     }
-    // The block's own bound, at its low safety (0.3), stays far from the resonance StepHold avoids.
+    // The block's own bound, at its default safety 0.3 (omega dt <= 0.6), cannot resonate as StepHold describes.
     return std::min(cfg_.integration.safety * s.critical(), stemStep_.next(cfg_.integration.stemSafety * stems));
 }
 

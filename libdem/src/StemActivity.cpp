@@ -61,27 +61,30 @@ bool StemActivity::blockCanReach(const RigidBody& block, const Stem& s, double g
     const Vec3 blockVelocity = block.velocity - Vec3(0, 0, 0.5 * gravity * horizon);
     const double slack = block.boundingRadius() + cfg_.wakeMargin;
     // The gap from the block's bounding sphere, widened by the margin, to the stem's surface at a
-    // point of its axis `radius` thick, which moves no faster than `speed`.
-    const auto reaches = [&](const Vec3& point, double radius, double speed) {
+    // point of its axis `radius` thick moving at `velocity`. Both moving on as they move now, the
+    // distance between them shrinks over the horizon by at most their relative velocity along the
+    // line between them times the horizon (|d + u| >= |d| + u . d / |d|): a node swinging or falling
+    // away from the block, or past it, does not close the gap.
+    const auto reaches = [&](const Vec3& point, double radius, const Vec3& velocity) {
         const Vec3 d = point - block.position;
         const double distance = d.norm();
         const double gap = distance - slack - radius;
         if (gap <= 0) return true;
-        return gap < (blockVelocity.dot(d) / distance + speed) * horizon;
+        return gap < (blockVelocity - velocity).dot(d) / distance * horizon;
     };
     const auto radiusAt = [&](std::size_t node) { return 0.5 * s.diameterAt(s.restHeight(node)); };
     // Each node, and each intact connection at its point closest to the block (the stem is a cone
-    // between its nodes, and no point of the connection moves faster than its faster node, but for
-    // turning at its radius). The closing speed depends on the direction: a node the block falls
+    // between its nodes, and that point of the axis moves with the velocities of its nodes, weighed
+    // by where it lies). The closing speed depends on the direction: a node the block falls
     // towards may close its gap first although the connection's closest point does not.
     for (std::size_t i = 0; i < s.nodeCount(); ++i)
-        if (reaches(s.position[i], radiusAt(i), s.velocity[i].norm())) return true;
+        if (reaches(s.position[i], radiusAt(i), s.velocity[i])) return true;
     for (std::size_t c = 0; c < s.connectionCount(); ++c) {
         if (s.broken(c)) continue;
         const Vec3 &a = s.position[c], &b = s.position[c + 1];
         const double t = closestOnSegment(block.position, a, b);
-        const double speed = std::sqrt(std::max(s.velocity[c].squaredNorm(), s.velocity[c + 1].squaredNorm()));
-        if (reaches(a + t * (b - a), radiusAt(c) + t * (radiusAt(c + 1) - radiusAt(c)), speed)) return true;
+        const Vec3 velocity = (1 - t) * s.velocity[c] + t * s.velocity[c + 1];
+        if (reaches(a + t * (b - a), radiusAt(c) + t * (radiusAt(c + 1) - radiusAt(c)), velocity)) return true;
     }
     return false;
 }

@@ -103,6 +103,14 @@ TEST(StemActivity, BlockCanReachAStemItHeadsForWithinTheHorizon) {
     // ... unless a node swings towards it faster: node 1 at 6 m/s closes 0.1 m net in 0.1 s.
     s.velocity[1] = Vec3(6, 0, 0);
     EXPECT_TRUE(activity.blockCanReach(away, s, g));
+    // As fast, but swinging away from the block or past it (a top falling beside it), the node
+    // does not close the gap: only its speed towards the block counts.
+    s.velocity[1] = Vec3(-6, 0, 0);
+    EXPECT_FALSE(activity.blockCanReach(away, s, g)) << "swinging away";
+    s.velocity[1] = Vec3(0, 6, 0);
+    EXPECT_FALSE(activity.blockCanReach(away, s, g)) << "swinging past";
+    s.velocity[1] = Vec3(0, 0, -6);
+    EXPECT_FALSE(activity.blockCanReach(away, s, g)) << "falling past";
 }
 
 // A stem the block cannot reach may stop where it stands if it has swung free of everything for

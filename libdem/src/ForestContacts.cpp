@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "libdem/SegmentGeometry.hpp"
 #include "libdem/SphereContact.hpp"
@@ -27,6 +28,9 @@ Eigen::AlignedBox3d widenedNodeBox(const Stem& s, double margin) {
 // The margin, far above rounding, leaves every case near the bound to the exact tests that follow,
 // so that skipping on it changes nothing those tests would decide.
 bool beyondReach(double distance2, double reach) { return distance2 > reach * reach * (1 + 1e-9); }
+
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kRounding = 1e-9;  // m: far above a surface height's rounding, far below any contact's scale
 
 // History of a contact first seen at this overlap. Stems are checked against each other only
 // while awake, so a stem can be woken into a neighbour that already bent into it; the part of the
@@ -259,14 +263,24 @@ void ForestMotion::detectStemSoil() {
             touch.geometry.relativeVelocity.setZero();
             touch.geometry.meanSpinNormal = 0;
         }
+    const double rise = soil_.steepestRise();
     for (auto& a : awake_) {
         if (a.soilChecked && !a.moving) continue;
         a.soilChecked = true;
         const Stem& s = a.stem;
+        if (a.surfaceSeen.size() != s.nodeCount()) a.surfaceSeen.assign(s.nodeCount(), Vec3::Constant(kNaN));
         for (std::uint32_t k = 1; k < s.nodeCount(); ++k) {
             const Vec3& p = s.position[k];
             const double r = 0.5 * s.diameterAt(s.restHeight(k));
-            if (p.z() - r > soil_.surfaceHeight(p.x(), p.y()) + 0.05) continue;  // soil tops are at the surface
+            // Soil tops are at the surface: a node this high above it touches none. The height seen
+            // last, raised by the steepest rise over the distance moved since, is as high as the
+            // surface under it can be (kRounding: the height's own rounding, a few ulps).
+            Vec3& seen = a.surfaceSeen[k];
+            const double moved = (p.head<2>() - seen.head<2>()).norm();
+            if (p.z() - r > seen.z() + rise * moved + 0.05 + kRounding) continue;  // NaN, never seen: false
+            const double surface = soil_.surfaceHeight(p.x(), p.y());
+            seen = Vec3(p.x(), p.y(), surface);
+            if (p.z() - r > surface + 0.05) continue;
             nearSoil_.clear();
             soil_.near(p, r + rs, nearSoil_);
             for (std::uint32_t id : nearSoil_) {

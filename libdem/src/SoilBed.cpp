@@ -96,6 +96,9 @@ SoilBed SoilBed::fromProfile(const SlopeProfile& profile, const SoilBedParams& p
     RowOffsets offsets(params.seed, R, d);
     const auto& x = profile.xs();
     const auto& z = profile.zs();
+    // Linear between vertices, the end segments extended: its steepest segment.
+    for (std::size_t k = 0; k + 1 < x.size(); ++k)
+        bed.steepestRise_ = std::max(bed.steepestRise_, std::abs(z[k + 1] - z[k]) / (x[k + 1] - x[k]));
     const auto segmentLength = [&](std::size_t i) { return std::hypot(x[i + 1] - x[i], z[i + 1] - z[i]); };
     std::ostringstream extent;
     extent << "a profile " << profile.length() << " m long and " << params.width << " m wide";
@@ -122,6 +125,16 @@ SoilBed SoilBed::fromGrid(const ElevationGrid& grid, const SoilBedParams& params
     grid.requireDefined(grid.xmin(), grid.xmax(), grid.ymin(), grid.ymax());
     SoilBed bed(params, grid.xmin(), grid.xmax(), grid.ymin(), grid.ymax());
     bed.grid_ = grid;
+    // Bilinear in each cell: its slope along x is a mean of those of the cell's two edges along x,
+    // along y likewise, so neither exceeds the steeper edge (clamped outside the grid: flat there).
+    const std::vector<double>& z = grid.values();
+    const auto at = [&](int c, int r) { return z[static_cast<std::size_t>(r) * grid.columns() + c]; };
+    for (int r = 0; r + 1 < grid.rows(); ++r)
+        for (int c = 0; c + 1 < grid.columns(); ++c) {
+            const double zx = std::max(std::abs(at(c + 1, r) - at(c, r)), std::abs(at(c + 1, r + 1) - at(c, r + 1)));
+            const double zy = std::max(std::abs(at(c, r + 1) - at(c, r)), std::abs(at(c + 1, r + 1) - at(c + 1, r)));
+            bed.steepestRise_ = std::max(bed.steepestRise_, std::hypot(zx, zy) / grid.cellSize());
+        }
     const double R = bed.radius_, d = bed.spacing_;
     RowOffsets offsets(params.seed, R, d);
     std::ostringstream extent;

@@ -336,3 +336,36 @@ TEST(SoilBed, WriteCsvToAMissingDirectoryIsAnInputError) {
     const SoilBed bed = SoilBed::fromProfile(SlopeProfile({0, 5}, {6, 3}), params(3.0));
     EXPECT_THROW(bed.writeCsv("/nonexistent-directory/soil.csv"), InputError);
 }
+
+// What steepestRise promises (a height known at p bounds the surface at q by the rise times the
+// horizontal distance; detectStemSoil skips on it), on random pairs over a profile with breaks and a
+// bumpy DTM, and that it is not loose: on the profile it is its steepest segment, on the DTM within
+// sqrt(2) of the steepest slope sampled (the bilinear cell's bound takes its two axes' worst edges).
+TEST(SoilBed, SteepestRiseBoundsTheSurfaceAroundAnyKnownHeight) {
+    const SlopeProfile profile({0, 40, 60, 100, 130, 160}, {120, 90, 90, 20.7, 10, 12});
+    const SoilBed onProfile = SoilBed::fromProfile(profile, params(30.0, 3));
+    EXPECT_DOUBLE_EQ(onProfile.steepestRise(), (90 - 20.7) / 40);
+
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> bump(-1.5, 1.5);
+    std::vector<double> z;
+    for (int r = 0; r < 12; ++r)
+        for (int c = 0; c < 15; ++c) z.push_back(0.4 * c * 2 + bump(rng));
+    const SoilBed onDtm = SoilBed::fromGrid(ElevationGrid::fromValues(15, 12, 0, 0, 2, z, "bumps"), params(0.0));
+
+    for (const SoilBed* bed : {&onProfile, &onDtm}) {
+        std::uniform_real_distribution<double> ux(bed->xmin() - 2, bed->xmax() + 2), uy(bed->ymin(), bed->ymax());
+        double tightest = 0;  // the largest rise per metre found over a few centimetres
+        for (const double far : {3.0, 0.03}) {
+            std::uniform_real_distribution<double> step(-far, far);
+            for (int i = 0; i < 20000; ++i) {
+                const double px = ux(rng), py = uy(rng), qx = px + step(rng), qy = std::clamp(py + step(rng), bed->ymin(), bed->ymax());
+                const double distance = std::hypot(qx - px, qy - py);
+                const double rise = bed->surfaceHeight(qx, qy) - bed->surfaceHeight(px, py);
+                ASSERT_LE(rise, bed->steepestRise() * distance + 1e-12) << "from (" << px << ", " << py << ") to (" << qx << ", " << qy << ")";
+                if (distance > 1e-3) tightest = std::max(tightest, rise / distance);
+            }
+        }
+        EXPECT_GT(tightest, bed->steepestRise() / std::sqrt(2.0));
+    }
+}

@@ -86,6 +86,10 @@ private:
         // at every step cost 4 % of a forested run.
         std::optional<Eigen::AlignedBox3d> nodeBox;
         double nodeBoxSlack = 0;  // m: how far it was widened since it was built
+        // Per node, where the soil's surface height was last asked for it, and that height (x, y,
+        // height): with SoilBed::steepestRise it tells, without asking again, that a node moved a
+        // few millimetres since is still too high to touch the soil (detectStemSoil).
+        std::vector<Vec3> surfaceSeen;
     };
     // Connections of two awake stems (indices into awake_) close enough to be checked each step.
     struct ConnectionPair {

@@ -56,6 +56,10 @@ public:
     void near(const Eigen::Vector3d& p, double reach, std::vector<std::uint32_t>& out) const;
 
     double surfaceHeight(double x, double y) const;  // the macroscopic surface (profile or DTM)
+    // How fast the surface can rise per metre across, in any horizontal direction:
+    // surfaceHeight(q) <= surfaceHeight(p) + steepestRise() |q - p| (horizontal distance). What a
+    // height already known says about the heights around it, without asking for them.
+    double steepestRise() const { return steepestRise_; }
     bool onProfile() const { return profile_.has_value(); }  // a slope profile extruded sideways, not a DTM
     // Distance along the surface from x0 to x1 at cross-slope position y (the run-out measure);
     // negative when x1 < x0.
@@ -83,6 +87,7 @@ private:
     std::vector<double> centerZ_;       // per sphere, id = row * perRow_ + j
     std::uint32_t perRow_ = 0;
     double xmin_ = 0, xmax_ = 0, ymin_ = 0, ymax_ = 0;
+    double steepestRise_ = 0;
     // the macroscopic surface: exactly one is set
     std::optional<SlopeProfile> profile_;
     std::optional<ElevationGrid> grid_;

@@ -99,7 +99,10 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
                 ContactGeometry found;
                 const bool touching = touchSpheres(centres[i], rb, axisPoint, r, found);
                 const double overlap = found.overlap;
-                if (overlap > -approach) a.moving = true;
+                if (overlap > -approach) {
+                    a.moving = true;
+                    a.lastBlockNear = now_;
+                }
                 if (!touching) continue;
                 // One contact per (block sphere, stem piece): the deepest connection; its history
                 // moves with it from one connection to the next.

@@ -69,7 +69,7 @@ void ForestMotion::wake(std::uint32_t tree, double t) {
     const bool broken = falling(stem);
     // The all-awake reference steps every stem, standing or not.
     awakeSlot_[tree] = awake_.size();
-    awake_.push_back(AwakeStem{tree, std::move(stem), {}, stability, t, broken, cfg_.activity.allAwake, StemAwake::Waiting, {}, {}, false, false, -std::numeric_limits<double>::infinity(), std::nullopt, std::nullopt, 0, {}});
+    awake_.push_back(AwakeStem{tree, std::move(stem), {}, stability, t, broken, cfg_.activity.allAwake, StemAwake::Waiting, {}, {}, false, false, -std::numeric_limits<double>::infinity(), std::nullopt, std::nullopt, 0, {}, false, -std::numeric_limits<double>::infinity()});
     stemPairsStale_ = true;
 }
 
@@ -295,7 +295,8 @@ void ForestMotion::integrate(double dt) {
         if (a.broken) nodeSteps_.broken += a.stem.nodeCount();
         if (a.onSoilOrStem) nodeSteps_.onSoilOrStem += a.stem.nodeCount();
         const double externalBefore = a.stem.ledger.externalWork;
-        const StemEnergy e = stepper_.step(a.stem, dt, a.loads);
+        const StemEnergy e = stepper_.step(a.stem, dt, a.loads, a.stepped ? StemStart::Moving : StemStart::FromRest);
+        a.stepped = true;
         a.nodeBoxSlack += e.farthestMove;
         if (a.nodeBox && a.nodeBoxSlack <= kNodeBoxSlack) {
             const Vec3 widen = Vec3::Constant(e.farthestMove);
@@ -328,11 +329,13 @@ void ForestMotion::sleep(const RigidBody& block, double t) {
     for (const auto& c : stemTouches_)
         if (!c.ignored) islands_.join(index(c.treeA), index(c.treeB));  // ignored: fused at rest, no force
 
-    // Rest: no moving stem of the island is touched by the block now, and each may rest
-    // (StemActivity::mayRest, the costlier test, asked only while its island still may).
+    // Rest: no moving stem of the island is touched by the block now or within the approach that sets
+    // a stem moving (detectBlockStem: rested, it would be set moving again at the next step, and so
+    // on), and each may rest (StemActivity::mayRest, the costlier test, asked only while its island
+    // still may).
     islands_.allowAll();
     for (std::size_t i = 0; i < n; ++i)
-        if (awake_[i].moving && awake_[i].lastBlockContact == now_) islands_.forbid(i);
+        if (awake_[i].moving && (awake_[i].lastBlockContact == now_ || awake_[i].lastBlockNear == now_)) islands_.forbid(i);
     for (std::size_t i = 0; i < n; ++i) {
         const AwakeStem& a = awake_[i];
         if (a.moving && islands_.allowed(i) && !activity_.mayRest(block, a.stem, a.lastOtherContact, t, cfg_.gravity))
@@ -391,6 +394,7 @@ void ForestMotion::rest(AwakeStem& a) {
     if (falling(s)) slept_.frozenPieces += kinetic;
     for (std::size_t i = 0; i < s.nodeCount(); ++i) s.velocity[i].setZero(), s.angularVelocity[i].setZero();
     a.moving = false;
+    a.stepped = false;
     a.standingBudget.reset();
 }
 

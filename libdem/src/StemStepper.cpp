@@ -33,7 +33,7 @@ StemEnergy StemStepper::energyAtRest(const Stem& stem) const {
     return e;
 }
 
-StemEnergy StemStepper::step(Stem& stem, double dt, const StemLoads& loads) {
+StemEnergy StemStepper::step(Stem& stem, double dt, const StemLoads& loads, StemStart start) {
     const std::size_t n = stem.nodeCount();
     const bool hasForce = !loads.force.empty(), hasTorque = !loads.torque.empty();
     if ((hasForce && loads.force.size() != n) || (hasTorque && loads.torque.size() != n))
@@ -49,6 +49,9 @@ StemEnergy StemStepper::step(Stem& stem, double dt, const StemLoads& loads) {
     const std::vector<double>& inertia = stem.inertia();
     StemLedger& ledger = stem.ledger;
     const double rate = relaxationRate_;
+    // From rest, the velocities half a step back are those that make the start's own zero: minus half
+    // a kick (velocity Verlet's start), so that the step's kick leaves half a kick.
+    const double backKick = start == StemStart::FromRest ? -0.5 * dt : 0.0;
     double farthest2 = 0;
     for (std::size_t i = 0; i < n; ++i) {
         e.potential -= mass[i] * gravity_.dot(stem.position[i]);
@@ -56,6 +59,7 @@ StemEnergy StemStepper::step(Stem& stem, double dt, const StemLoads& loads) {
             Vec3& v = stem.velocity[i];
             Vec3 f = force_[i] + mass[i] * gravity_ - rate * mass[i] * v;
             if (hasForce) f += loads.force[i];
+            if (backKick != 0) v = backKick * stem.inverseMass()[i] * f;
             // Leapfrog: v(t - dt/2) -> v(t + dt/2); the kinetic energy at t from their mean.
             const Vec3 before = v;
             v += dt * stem.inverseMass()[i] * f;
@@ -70,6 +74,7 @@ StemEnergy StemStepper::step(Stem& stem, double dt, const StemLoads& loads) {
             Vec3& w = stem.angularVelocity[i];
             Vec3 t = torque_[i] - rate * inertia[i] * w;
             if (hasTorque) t += loads.torque[i];
+            if (backKick != 0) w = backKick * stem.inverseInertia()[i] * t;
             const Vec3 before = w;
             w += dt * stem.inverseInertia()[i] * t;  // isotropic inertia: no gyroscopic term
             e.kinetic += 0.125 * inertia[i] * (before + w).squaredNorm();

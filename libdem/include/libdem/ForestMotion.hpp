@@ -10,6 +10,7 @@
 // run's energy and contacts is here.
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <unordered_map>
 #include <vector>
@@ -90,6 +91,10 @@ private:
         // height): with SoilBed::steepestRise it tells, without asking again, that a node moved a
         // few millimetres since is still too high to touch the soil (detectStemSoil).
         std::vector<Vec3> surfaceSeen;
+        // Stepped at the last step: its velocities are the leapfrog's mid-step ones. Not when woken
+        // nor once it rests: it then starts from rest (StemStart::FromRest).
+        bool stepped = false;
+        double lastBlockNear = -std::numeric_limits<double>::infinity();  // time the block last came within a step's approach
     };
     // Connections of two awake stems (indices into awake_) close enough to be checked each step.
     struct ConnectionPair {

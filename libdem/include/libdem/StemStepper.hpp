@@ -28,6 +28,13 @@ struct StemEnergy {
     double total() const { return kinetic + elastic + potential; }
 };
 
+// What a step starts from. A stem's velocities are the leapfrog's mid-step ones, half a step before
+// the step's start; a stem at rest there (woken standing, or stopped by ForestMotion's rest) has zero
+// velocity at the start itself, and its first kick is half a step's, as velocity Verlet starts. Kicked a
+// whole step from rest instead, a stem stopped and set moving again at every step moves by dt^2 a
+// per step, which diverges above dt = sqrt(2) / omega, where the leapfrog's limit is 2 / omega.
+enum class StemStart { Moving, FromRest };
+
 class StemStepper {
 public:
     // relaxationRate (1/s) adds a force -rate m v (and torque -rate I omega) on every node: a
@@ -37,7 +44,7 @@ public:
 
     // One step of dt (at most stem.stableTimeStep()). Returns the energy at the step's start, with the
     // velocities brought to that instant. Throws SimulationError if the state becomes NaN.
-    StemEnergy step(Stem& stem, double dt, const StemLoads& loads = {});
+    StemEnergy step(Stem& stem, double dt, const StemLoads& loads = {}, StemStart start = StemStart::Moving);
     // The same account for a stem at rest that is not stepped (no velocity, no load): its state as
     // left by the last step or by carryOwnWeight.
     StemEnergy energyAtRest(const Stem& stem) const;

@@ -59,8 +59,8 @@ bool StemActivity::blockCanReach(const RigidBody& block, const Stem& s, double g
     const double horizon = cfg_.returnHorizon;
     // The block flies on under gravity over the horizon: its mean velocity then.
     const Vec3 blockVelocity = block.velocity - Vec3(0, 0, 0.5 * gravity * horizon);
-    const double slack = block.boundingRadius() + cfg_.wakeMargin;
-    // The gap from the block's bounding sphere, widened by the margin, to the stem's surface at a
+    const double slack = block.boundingRadius();
+    // The gap from the block's bounding sphere to the stem's surface at a
     // point of its axis `radius` thick moving at `velocity`. Both moving on as they move now, the
     // distance between them shrinks over the horizon by at most their relative velocity along the
     // line between them times the horizon (|d + u| >= |d| + u . d / |d|): a node swinging or falling

@@ -40,12 +40,13 @@ public:
     std::optional<StemAwake> holds(const RigidBody& block, const PlacedTree& tree, const Stem& s, bool broken,
                                    double lastBlockContact, double t) const;
 
-    // The block could reach this stem within forest.return_horizon_s: it is within touching distance
-    // of a node or of an intact connection (its bounding sphere and the wake margin from the stem's
-    // surface there; a connection at the point of its axis closest to the block), or the gap there
-    // closes in that time at their speed towards each other along the line between them (the
-    // block's velocity, flying on under gravity, less the node's; a connection's point moves with
-    // its nodes' velocities weighed by where it lies).
+    // The block could reach this stem within forest.return_horizon_s: its bounding sphere touches the
+    // stem's surface at a node or at an intact connection (at the point of its axis closest to the
+    // block), or the gap there closes in that time at their speed towards each other along the line
+    // between them (the block's velocity, flying on under gravity, less the node's; a connection's
+    // point moves with its nodes' velocities weighed by where it lies). No wake margin: the horizon
+    // covers what comes next, and a stem the block is about to touch is held by detectBlockStem's
+    // approach (ForestMotion::sleep).
     bool blockCanReach(const RigidBody& block, const Stem& s, double gravity) const;
     // A moving stem the block has left may stop where it stands (stay awake, no longer stepped):
     // the block cannot reach it within the horizon, and it has either swung free of the soil and of

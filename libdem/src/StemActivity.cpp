@@ -60,11 +60,11 @@ bool StemActivity::blockCanReach(const RigidBody& block, const Stem& s, double g
     // The block flies on under gravity over the horizon: its mean velocity then.
     const Vec3 blockVelocity = block.velocity - Vec3(0, 0, 0.5 * gravity * horizon);
     const double slack = block.boundingRadius();
-    // The gap from the block's bounding sphere to the stem's surface at a
-    // point of its axis `radius` thick moving at `velocity`. Both moving on as they move now, the
-    // distance between them shrinks over the horizon by at most their relative velocity along the
-    // line between them times the horizon (|d + u| >= |d| + u . d / |d|): a node swinging or falling
-    // away from the block, or past it, does not close the gap.
+    // The gap from the block's bounding sphere to the stem's surface at a point of its axis `radius`
+    // thick moving at `velocity`. Both moving on so (the block under gravity), their distance shrinks
+    // over the horizon by at most their relative velocity along the line between them times the
+    // horizon (|d + u| >= |d| + u . d / |d|): a node swinging or falling away from the block, or past
+    // it, does not close the gap.
     const auto reaches = [&](const Vec3& point, double radius, const Vec3& velocity) {
         const Vec3 d = point - block.position;
         const double distance = d.norm();

@@ -69,10 +69,9 @@ TEST(StemActivity, StemSleepsOnlyOnceTheBlockHasGoneAndItsPiecesRest) {
     EXPECT_EQ(activity.holds(gone, t, s, true, 0.0, 1.0), maySleep) << "pieces at rest";
 }
 
-// The block can reach a stem within the horizon H if it is within touching distance of a connection
-// (its bounding radius and the margin from the connection's surface) or closes the gap in H: its
-// velocity towards the connection's closest point (falling on under gravity) plus the faster node's
-// speed, whichever way.
+// The block can reach a stem within the horizon H if its bounding sphere touches a node's or a
+// connection's surface, or closes the gap in H: its velocity (falling on under gravity) less the
+// stem's there, along the line between them.
 TEST(StemActivity, BlockCanReachAStemItHeadsForWithinTheHorizon) {
     ForestActivity cfg;
     cfg.wakeMargin = 0.1;

@@ -69,7 +69,7 @@ void ForestMotion::wake(std::uint32_t tree, double t) {
     const bool broken = falling(stem);
     // The all-awake reference steps every stem, standing or not.
     awakeSlot_[tree] = awake_.size();
-    awake_.push_back(AwakeStem{tree, std::move(stem), {}, stability, t, broken, cfg_.activity.allAwake, StemAwake::Waiting, {}, {}, false, false, -std::numeric_limits<double>::infinity(), std::nullopt, std::nullopt, 0, {}, false, -std::numeric_limits<double>::infinity()});
+    awake_.emplace_back(tree, std::move(stem), stability, t, broken, cfg_.activity.allAwake);
     stemPairsStale_ = true;
 }
 

@@ -13,6 +13,7 @@
 #include <limits>
 #include <optional>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "libdem/BlockRun.hpp"
@@ -61,6 +62,10 @@ public:
 
 private:
     struct AwakeStem {
+        // Woken at `wokenAt`, standing still unless `moving` (the all-awake reference steps it at once).
+        AwakeStem(std::uint32_t tree, Stem stem, const StableStep& stability, double wokenAt, bool broken, bool moving)
+            : tree(tree), stem(std::move(stem)), stability(stability), lastBlockContact(wokenAt), broken(broken),
+              moving(moving) {}
         std::uint32_t tree;
         Stem stem;
         StemLoads loads;
@@ -70,14 +75,14 @@ private:
         bool moving;              // stepped: set by a touch of the block or of a moving stem, cleared
                                   // when it rests; until then it stands still, is not stepped and
                                   // does not limit the time step
-        StemAwake heldBy;         // what kept it awake at the last sleep check, once the block left it
+        StemAwake heldBy = StemAwake::Waiting;  // what kept it awake at the last sleep check, once the block left it
         mutable std::vector<StableStep> contactBounds;  // per node, from the contacts' springs and dashpots (stableStep)
         std::vector<Vec3> listedAt;  // node positions when stemPairs_ was made
         // Checked against the soil since woken. A stem that does not move keeps its nodes where they
         // were checked, and its contacts with the soil as they were: it needs no new check.
         bool soilChecked = false;
         bool onSoilOrStem = false;  // touching the soil or another stem at the last detection
-        double lastOtherContact;    // time of the last detection that found it so
+        double lastOtherContact = -std::numeric_limits<double>::infinity();  // time of the last detection that found it so
         // Its energy and its ledger's balance while it stands still: the same at every step until it moves.
         std::optional<double> standingBudget;
         // The box around its nodes the block is first tested against (detectBlockStem), kept while it

@@ -362,6 +362,7 @@ TEST(SoilBed, SteepestRiseBoundsTheSurfaceAroundAnyKnownHeight) {
                 const double px = ux(rng), py = uy(rng), qx = px + step(rng), qy = std::clamp(py + step(rng), bed->ymin(), bed->ymax());
                 const double distance = std::hypot(qx - px, qy - py);
                 const double rise = bed->surfaceHeight(qx, qy) - bed->surfaceHeight(px, py);
+                // 1e-12 m: the heights' rounding (a few ulps of hundreds of metres), far below any rise tested.
                 ASSERT_LE(rise, bed->steepestRise() * distance + 1e-12) << "from (" << px << ", " << py << ") to (" << qx << ", " << qy << ")";
                 if (distance > 1e-3) tightest = std::max(tightest, rise / distance);
             }

@@ -56,7 +56,7 @@ const std::vector<Knob> kKnobs = {
     {"integration.stem_safety", {"0.4", "0.95"}},
     {"stem.node_spacing_m", {"0.25", "1.0"}},
     {"forest.wake_margin_m", {"0.05", "0.3"}},
-    {"forest.sleep_after_s", {"0.1", "1.0"}},
+    {"forest.sleep_after_s", {"0.0125", "0.1"}},
     {"forest.return_horizon_s", {"0.05", "0.4"}},
 };
 

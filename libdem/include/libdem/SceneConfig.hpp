@@ -68,7 +68,7 @@ struct StopConfig {
 struct ForestActivity {
     double wakeMargin = 0.1;    // m: a stem wakes when the block's bounding sphere comes this close (plus one step's travel)
     double returnHorizon = 0.1;  // s: a moving stem the block cannot reach within this time stops where it stands
-    double sleepAfter = 0.1;    // s without block contact, the block out of reach, before a stem sleeps again
+    double sleepAfter = 0.025;  // s without block contact, the block out of reach, before a stem sleeps again (docs/accuracy.md: 0.0125-1 s give one PF50)
     // A broken stem's pieces fall on: it sleeps only once every node is slower than this, m/s,
     double pieceRestSpeed = 0.2;
     // or this long after the block's last contact, s (a piece rolling downslope). 0: a broken stem

@@ -50,7 +50,8 @@ struct Knob {
     std::vector<std::string> values;
 };
 
-// Each knob at a cheaper and a finer value than its default (SceneConfig.hpp).
+// Each knob at a finer and a cheaper value than its default (SceneConfig.hpp); integration.stem_safety
+// defaults to 0.95, as close to the stems' stable limit as it goes, so its second value is the default itself.
 const std::vector<Knob> kKnobs = {
     {"integration.safety", {"0.15", "0.6"}},
     {"integration.stem_safety", {"0.4", "0.95"}},

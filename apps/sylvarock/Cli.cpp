@@ -33,7 +33,14 @@ bool parse(int argc, const char* const* argv, const po::options_description& opt
         "config", po::value<std::string>(), "read options from an INI file (key = value, keys as the long options)");
     po::options_description all;
     all.add(options).add(common);
-    po::store(po::command_line_parser(argc, argv).options(all).run(), vm);
+    const po::parsed_options parsed = po::command_line_parser(argc, argv).options(all).run();
+    // No command takes words of its own: one here is a value cut off its option ("--runs 2 000")
+    // or a typo, and program_options would drop it without a word.
+    for (const po::option& o : parsed.options)
+        if (o.position_key >= 0)
+            throw InputError("'" + o.value.front() + "' belongs to no option (a number is written without spaces, and "
+                             "each option takes one value)");
+    po::store(parsed, vm);
     if (vm.count("help")) {
         std::cout << "usage: " << usage << "\n\n" << all << "\n";
         if (!examples.empty()) std::cout << "Examples:\n" << examples << "\n";

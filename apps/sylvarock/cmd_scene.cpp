@@ -86,8 +86,6 @@ int runScene(int argc, const char* const* argv) {
         "run", po::value<long>()->default_value(0), "the run of the campaign whose release is written (0, 1, ...)")(
         "out", po::value<std::string>(), "output directory")(
         "set", po::value(&sets)->composing(), "override a scene key: --set section.key=value");
-    po::positional_options_description pos;
-    pos.add("action", 1);
     po::variables_map vm;
     // The action is positional: sylvarock scene export ...
     std::vector<const char*> args(argv, argv + argc);

@@ -44,3 +44,12 @@ TEST(CliHelp, NoCommandOrAnUnknownOneIsAUsageError) {
     const auto unknown = runCli("simulat");
     EXPECT_EQ(unknown.status, 2) << unknown.output;
 }
+
+// A word no option takes is refused, not dropped: "--runs 2 000" once ran 2 runs without a word.
+TEST(CliHelp, AStrayWordIsRefusedByEveryCommand) {
+    for (const auto& name : listedCommands(runCli("--help").output)) {
+        const auto stray = runCli(name + " --help 000");
+        EXPECT_EQ(stray.status, 2) << name << ":\n" << stray.output;
+        EXPECT_NE(stray.output.find("'000' belongs to no option"), std::string::npos) << name << ":\n" << stray.output;
+    }
+}

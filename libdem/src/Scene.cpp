@@ -67,7 +67,7 @@ Scene::Scene(SceneConfig config, std::shared_ptr<const SoilBed> soil, stand::For
         config_.release.yMin = config_.release.forestYMin;
         config_.release.yMax = config_.release.forestYMax;
     }
-    if (!forest_.trees.empty()) trees_ = TreeField(forest_, *soil_);
+    if (!forest_.trees.empty()) trees_ = TreeField(forest_, *soil_, config_.stem.tipDiameter);
     setContactLaws();
 }
 

@@ -8,7 +8,7 @@
 
 namespace sylva::dem {
 
-TreeField::TreeField(const stand::Forest& forest, const SoilBed& soil) {
+TreeField::TreeField(const stand::Forest& forest, const SoilBed& soil, double tipDiameter) {
     if (forest.trees.empty()) return;
     double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
     for (const auto& t : forest.trees) {
@@ -20,6 +20,14 @@ TreeField::TreeField(const stand::Forest& forest, const SoilBed& soil) {
                  << soil.ymin() << ", " << soil.ymax() << "] m): a forest in another frame or CRS?";
             throw InputError(forest.source, t.line, what.str());
         }
+        // Checked here, with the file's line, rather than when the block first reaches the stem: a
+        // forest that cannot be built fails before any run, whatever the seed.
+        if (!(t.dbhCm / 100 > tipDiameter))
+            throw InputError(forest.source, t.line,
+                             (forest.source.empty() ? "forest: " : "") + std::string("stem ") + std::to_string(t.id) + ": a DBH of " +
+                                 readableNumber(t.dbhCm) + " cm is not above the stems' tip diameter (stem.tip_diameter_m = " +
+                                 readableNumber(tipDiameter * 100) +
+                                 " cm), so it cannot be built as a stem: leave such stems out of the forest, or lower stem.tip_diameter_m");
         StemGeometry g;
         g.dbh = t.dbhCm / 100;
         g.height = t.heightM;

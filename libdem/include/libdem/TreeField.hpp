@@ -22,8 +22,9 @@ struct PlacedTree {
 class TreeField {
 public:
     TreeField() = default;
-    // Places every tree of the forest on the surface; throws InputError for a tree outside the terrain.
-    TreeField(const stand::Forest& forest, const SoilBed& soil);
+    // Places every tree of the forest on the surface; throws InputError for a tree outside the terrain
+    // or one too thin to be built as a stem (a DBH not above the stems' tip diameter, m).
+    TreeField(const stand::Forest& forest, const SoilBed& soil, double tipDiameter);
 
     std::size_t size() const { return trees_.size(); }
     const PlacedTree& tree(std::size_t i) const { return trees_[i]; }

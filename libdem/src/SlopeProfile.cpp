@@ -71,6 +71,11 @@ SlopeProfile SlopeProfile::readCsv(const std::string& path) {
         t.fail(i, cx,
                "x = " + t.text(i, cx) + " does not increase (previous point, line " + std::to_string(t.lineOf(i - 1)) +
                    ", has x = " + t.text(i - 1, cx) + "); x must increase strictly");
+    // Run-out is measured down the slope along +x: a profile climbing with x sends every block off its top edge.
+    if (z.back() > z.front())
+        t.fail(t.rows() - 1, cz,
+               "the profile rises along x (z " + t.text(0, cz) + " m at x = " + t.text(0, cx) + " m, " + t.text(t.rows() - 1, cz) +
+                   " m at x = " + t.text(t.rows() - 1, cx) + " m): blocks run out along +x, downhill; give it falling with x");
     return SlopeProfile(std::move(x), std::move(z));
 }
 

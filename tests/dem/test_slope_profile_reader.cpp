@@ -69,6 +69,14 @@ TEST(SlopeProfileReader, XNotIncreasingNamesBothLines) {
     EXPECT_TRUE(contains(e.what(), "increase")) << e.what();
 }
 
+// profile_rising.csv ends 3 m above its start: every block would leave by its top edge and report a
+// negative run-out.
+TEST(SlopeProfileReader, AProfileRisingAlongXIsRefused) {
+    const InputError e = readError("profile_rising.csv");
+    EXPECT_EQ(e.line(), 4);
+    EXPECT_TRUE(contains(e.what(), "rises along x (z 5 m at x = 0 m, 8 m at x = 20 m)")) << e.what();
+}
+
 TEST(SlopeProfileReader, OnePointIsNotAProfile) {
     const InputError e = readError("profile_one_point.csv");
     EXPECT_EQ(e.line(), 3);

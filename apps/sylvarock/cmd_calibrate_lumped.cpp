@@ -21,9 +21,14 @@ namespace {
 std::vector<double> readRunouts(const std::string& path) {
     const auto t = CsvTable::read(path);
     const std::size_t runout = t.require("runout_m"), reason = t.require("stop_reason");
+    // The lumped soil is calibrated on bare ground: run-outs shortened by trees would make it rougher.
+    const auto impacts = t.index("tree_impacts");
     std::vector<double> out;
-    for (std::size_t i = 0; i < t.rows(); ++i)
+    for (std::size_t i = 0; i < t.rows(); ++i) {
+        if (impacts && !t.text(i, *impacts).empty() && t.number(i, *impacts) > 0)
+            t.fail(i, *impacts, "this run hit trees: calibrate on a campaign without forest (simulate with no --forest)");
         if (t.text(i, reason) != "failed") out.push_back(t.number(i, runout));
+    }
     if (out.size() < 100)
         throw InputError(path, 0, std::to_string(out.size()) + " finished runs: a Dist50 to calibrate on needs at least 100 (the paper used 3 000)");
     return out;

@@ -3,7 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
 
+#include "../CliRun.hpp"
 #include "DemTestScenes.hpp"
 #include "libdem/Campaign.hpp"
 #include "libdem/LumpedCalibration.hpp"
@@ -177,4 +181,20 @@ TEST(LumpedRun, RefusesAnUnknownSoilType) {
     }
     EXPECT_THROW(sceneFromOverrides({"lumped.rg70_m=-0.1"}), sylva::InputError);
     EXPECT_THROW(parseModel("rf3d"), sylva::InputError);
+}
+
+// The lumped soil is calibrated on bare ground: a runs.csv whose blocks hit trees is refused at the
+// first such row, before any lumped run.
+TEST(LumpedCalibration, RefusesRunOutsShortenedByTrees) {
+    const auto dir = std::filesystem::temp_directory_path() / "sylvarock-calibrate-forested";
+    std::filesystem::create_directories(dir);
+    const std::string runs = (dir / "runs.csv").string();
+    std::ofstream out(runs);
+    out << "run,runout_m,stop_reason,tree_impacts\n";
+    for (int i = 0; i < 120; ++i) out << i << "," << 300 + i << ",rest," << (i == 7 ? 2 : 0) << "\n";
+    out.close();
+    const auto r = sylva::testing::runCli("calibrate-lumped --scene " + std::string(SYLVAROCK_DATA) + "/scenes/no-forest.ini --dem " + runs);
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find(runs + ":9"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("this run hit trees"), std::string::npos) << r.output;
 }

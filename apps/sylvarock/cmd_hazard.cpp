@@ -105,7 +105,9 @@ int runHazardCommand(int argc, const char* const* argv) {
     for (const auto& f : r.files) others += ", " + f;
     std::printf("rasters, map.svg, map.png%s and summary.json in %s (%.1f s)\n", others.c_str(), h.outDir.c_str(), wall);
     if (failed) {
-        std::cerr << "sylvarock hazard: " << failed << " run(s) stopped on a numerical error and are left out (summary.json failed_runs)\n";
+        std::cerr << "sylvarock hazard: " << failed
+                  << " run(s) could not start or stopped on a numerical error (the notes above say which) and are left out "
+                     "of the maps (summary.json failed_runs)\n";
         return kRunsFailed;
     }
     return 0;

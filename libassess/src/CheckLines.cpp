@@ -86,13 +86,16 @@ std::vector<Eigen::Vector2d> verticesOf(const OGRLineString& line) {
 }
 
 // The lines of one layer; `count` numbers the line features of the file, for their default names.
-std::vector<RawLine> layerLines(OGRLayer& layer, int& count) {
+std::vector<RawLine> layerLines(OGRLayer& layer, int& count, int& others) {
     std::vector<RawLine> lines;
     const int nameField = layer.GetLayerDefn()->GetFieldIndex("name");
     for (auto& feature : layer) {
         const OGRGeometry* g = feature->GetGeometryRef();
         const auto type = g ? wkbFlatten(g->getGeometryType()) : wkbNone;
-        if (type != wkbLineString && type != wkbMultiLineString) continue;
+        if (type != wkbLineString && type != wkbMultiLineString) {
+            ++others;
+            continue;
+        }
         ++count;
         const bool named = nameField >= 0 && feature->IsFieldSetAndNotNull(nameField) && *feature->GetFieldAsString(nameField) != '\0';
         const std::string name = named ? feature->GetFieldAsString(nameField) : "line " + std::to_string(count);
@@ -165,19 +168,22 @@ void close(std::ofstream& out, const std::string& path) {
 
 }  // namespace
 
-std::vector<CheckLine> readCheckLines(const std::string& path, const Dtm& dtm) {
+std::vector<CheckLine> readCheckLines(const std::string& path, const Dtm& dtm, int* passedOver) {
     GDALDatasetUniquePtr ds = openVectorFile(path);
     std::vector<RawLine> raw;
-    int count = 0;
+    int count = 0, others = 0;
     for (OGRLayer* layer : ds->GetLayers()) {
         if (layer->GetGeomType() == wkbNone) continue;
-        std::vector<RawLine> lines = layerLines(*layer, count);
+        int othersHere = 0;
+        std::vector<RawLine> lines = layerLines(*layer, count, othersHere);
         if (lines.empty()) continue;
+        others += othersHere;
         // After the reading: the CRS check reads the layer's extent, which restarts its reading.
         requireDtmCrs(*layer, path, dtm);
         for (auto& l : lines) raw.push_back(std::move(l));
     }
     if (raw.empty()) throw InputError(path, 0, "no line in the file: check lines are LineString or MultiLineString features");
+    if (passedOver) *passedOver = others;
     std::map<std::string, const RawLine*> byName;
     std::vector<CheckLine> lines;
     for (const auto& r : raw) {

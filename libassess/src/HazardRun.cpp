@@ -9,6 +9,8 @@
 #include <map>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <unordered_map>
 
 #include "HazardStore.hpp"
@@ -193,7 +195,7 @@ HazardPass runPass(const std::string& name, const BlockVolumeScenes& blocks, con
     if (outputs.store) outputs.store->flush();
     HazardPass pass;
     pass.name = name;
-    if (blocks.classes() > 1) pass.blocksPerVolume.assign(blocks.classes(), 0);
+    if (!o.blockVolumes.empty()) pass.blocksPerVolume.assign(blocks.classes(), 0);
     std::vector<double> path, reach;
     std::vector<BlockPath> keptPaths;
     std::vector<ImpactPoint> keptImpacts;
@@ -224,6 +226,10 @@ HazardPass runPass(const std::string& name, const BlockVolumeScenes& blocks, con
         if (o.writeTrajectories) writePathLayers(o.outDir + "/trajectories.gpkg", dtm, name, keptPaths, keptImpacts);
         if (o.writeVtk) writeVtkPaths(o.outDir + "/vtk", name, keptPaths);
     }
+    // A map made of no block would read as ground no block reaches.
+    if (pass.blocks == 0)
+        throw std::runtime_error("every one of the " + std::to_string(pass.failed) + " runs of the " + name +
+                                 " pass failed (the notes above say why): no map is written");
     if (!path.empty()) {
         pass.pathP50 = dem::quantile(path, 0.5);
         pass.pathP90 = dem::quantile(path, 0.9);
@@ -270,7 +276,12 @@ HazardResults runHazard(const HazardOptions& o) {
                                            "whole DTM: fill them (gdal_fillnodata.py) or crop the DTM to where it has heights (gdalwarp -te)");
     const std::vector<ReleaseCell> cells = readReleaseCells(o.releasePath, dtm);
     std::vector<CheckLine> lines;
-    if (!o.checkLinesPath.empty()) lines = readCheckLines(o.checkLinesPath, dtm);
+    if (!o.checkLinesPath.empty()) {
+        int others = 0;
+        lines = readCheckLines(o.checkLinesPath, dtm, &others);
+        if (others > 0 && o.onNote)
+            o.onNote(o.checkLinesPath + ": " + std::to_string(others) + " feature(s) beside the lines are not lines (points, polygons) and are passed over");
+    }
     const long total = static_cast<long>(cells.size()) * o.runsPerCell;
     if ((o.writeTrajectories || o.writeVtk) && total > kMostRunsWithPaths)
         throw InputError(std::to_string(total) + " runs a pass with " + (o.writeTrajectories ? "--trajectories" : "--vtk") + ": at most " +

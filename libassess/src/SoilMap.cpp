@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <map>
+#include <set>
+#include <string>
 
 #include "GdalSupport.hpp"
 #include "libcommon/CsvTable.hpp"
@@ -103,6 +105,12 @@ void zonesFromRaster(const std::string& path, const std::vector<SoilType>& types
 std::vector<SoilType> readSoilTypes(const std::string& path, const dem::SoilContactParams& sceneSoil) {
     const CsvTable t = CsvTable::read(path);
     const std::size_t name = t.require("name"), code = t.require("code");
+    // A misspelt column would leave that soil on the scene's value without a word.
+    static const std::set<std::string> known{"name", "code", "kn_n_m", "kappa", "damping_ratio", "restitution", "friction_deg"};
+    for (const std::string& column : t.header())
+        if (!known.count(column))
+            throw InputError(path, 1, "unknown column '" + column +
+                                          "' (the columns are name, code and any of kn_n_m, kappa, damping_ratio or restitution, friction_deg)");
     if (t.has("damping_ratio") && t.has("restitution"))
         throw InputError(path, 1, "both damping_ratio and restitution: give one (Eq. 15 ties them)");
     std::vector<SoilType> types;

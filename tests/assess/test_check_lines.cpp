@@ -147,8 +147,10 @@ TEST_F(CheckLines, ReadsNamedAndUnnamedLinesAndMultilineParts) {
             feature(R"({"name": "gully"})", "MultiLineString", "[[[700002, 6600002], [700004, 6600004]], [[700005, 6600005], [700006, 6600006], [700007, 6600005]]]") +
             ", " + feature(R"({"name": null})", "LineString", "[[700003, 6600003], [700008, 6600003]]") + ", " +
             feature(R"({"name": "road"})", "LineString", "[[699990, 6600010], [700040, 6600010]]"));
-    const auto lines = readCheckLines(named, d);
+    int passedOver = -1;
+    const auto lines = readCheckLines(named, d, &passedOver);
     ASSERT_EQ(lines.size(), 5u);
+    EXPECT_EQ(passedOver, 1);  // the point, for the caller to mention
     EXPECT_EQ(lines[0].name, "crest");
     ASSERT_EQ(lines[0].vertices.size(), 2u);
     EXPECT_EQ(lines[0].vertices[1], Eigen::Vector2d(700029, 6600019));

@@ -458,6 +458,35 @@ TEST_F(Hazard, BlocksDrawTheirVolumeFromTheDistribution) {
     EXPECT_NE(text.find("\"volume_m3\": 4"), std::string::npos);
 }
 
+// One volume is a distribution too (it once indexed an empty count), and a pass in which no block
+// could start writes no map: an all-zero one would read as ground no block reaches.
+TEST_F(Hazard, OneBlockVolumeIsCountedAndAPassWithoutBlocksWritesNoMap) {
+    HazardOptions o = smallSlope();
+    o.treesPath.clear();
+    o.compareBare = false;
+    o.runsPerCell = 2;
+    o.blockVolumes = parseBlockVolumes("2");
+    o.outDir = (dir_ / "one").string();
+    const HazardPass p = runHazard(o).passes.at(0);
+    ASSERT_EQ(p.blocksPerVolume.size(), 1u);
+    EXPECT_EQ(p.blocksPerVolume[0], p.blocks);
+    EXPECT_GT(p.blocks, 0);
+
+    o.blockVolumes.clear();
+    o.model = sylva::dem::Model::Dem;
+    o.runsPerCell = 1;
+    o.sceneOverrides = {"release.fall_height_m=0"};  // every block starts inside the soil
+    o.outDir = (dir_ / "none").string();
+    std::string message = "(no error)";
+    try {
+        runHazard(o);
+    } catch (const std::exception& e) {
+        message = e.what();
+    }
+    EXPECT_NE(message.find("failed (the notes above say why): no map is written"), std::string::npos) << message;
+    EXPECT_FALSE(std::filesystem::exists(dir_ / "none/reach_probability.tif"));
+}
+
 // The soil types' table: parameters not given are the scene's, a restitution becomes its damping
 // ratio (Eq. 15), and each bad row is named by its line and column.
 TEST_F(Hazard, SoilTypesTableFillsFromTheSceneAndNamesItsErrors) {
@@ -479,6 +508,8 @@ TEST_F(Hazard, SoilTypesTableFillsFromTheSceneAndNamesItsErrors) {
     EXPECT_NE(error("name,code\nscene,1\n").find("the scene's own soil"), std::string::npos);
     EXPECT_NE(error("name,code,damping_ratio,restitution\nscree,1,0.5,\n").find("give one"), std::string::npos);
     EXPECT_NE(error("name\nscree\n").find("code"), std::string::npos);
+    // A misspelt column would leave the soil on the scene's value.
+    EXPECT_NE(error("name,code,damping,kn_n_m\ndead,1,0.95,2e5\n").find("unknown column 'damping'"), std::string::npos);
 }
 
 // The map places the types on the DTM's cells (the type at each cell centre, the scene's soil

@@ -25,8 +25,9 @@ struct CheckLine {
 // multiline is its own CheckLine, "<name> part <k>". InputError naming the file (and the layer and
 // feature concerned) for: a file OGR cannot read, no line at all, a layer CRS other than the DTM's, a
 // line with fewer than 2 distinct vertices, a line entirely outside the DTM's extent (its cells' outer
-// edges), two lines with the same name.
-std::vector<CheckLine> readCheckLines(const std::string& path, const Dtm& dtm);
+// edges), two lines with the same name. `passedOver`, if given, receives how many features of the
+// layers holding lines are not lines (a map's points or polygons, which the caller may mention).
+std::vector<CheckLine> readCheckLines(const std::string& path, const Dtm& dtm, int* passedOver = nullptr);
 
 struct LineCrossing {
     int line = 0;          // index into the CheckLine vector

@@ -83,7 +83,7 @@ int runGenerate(int argc, const char* const* argv) {
         ("structure", po::value<std::string>()->required(),
          "aggregated (A: coppice stools resampled from the inventory, then single trees) or random (NA: uniform stems)")
         ("extent", po::value<std::string>()->required(), "xmin,ymin,xmax,ymax of the forest, in metres")
-        ("seed", po::value<Seed>()->default_value(Seed{}, "1"), "seed of the random generator (GSL mt19937), >= 0")
+        ("seed", po::value<Seed>()->default_value(Seed{}, "1"), "seed of the random generator (GSL mt19937), 0 to 4294967295 (0 is GSL's default seed, 4357)")
         ("realisations", po::value<long>()->default_value(1), "number of forests K; realisation k uses seed + k - 1")
         ("out", po::value<std::string>()->required(),
          "output CSV; with K > 1 F.csv becomes F_001.csv ... F_K.csv, or put {k} in the name (F_{k}.csv)")
@@ -104,6 +104,12 @@ int runGenerate(int argc, const char* const* argv) {
     const unsigned long seed = vm["seed"].as<Seed>().value;
     const long count = vm["realisations"].as<long>();
     if (count < 1) throw InputError("--realisations: must be >= 1, got " + std::to_string(count));
+    // GSL's Mersenne twister keeps 32 bits of its seed: beyond them two seeds would draw one forest.
+    constexpr unsigned long kLargestSeed = 0xFFFFFFFFUL;
+    if (seed > kLargestSeed || static_cast<unsigned long>(count - 1) > kLargestSeed - seed)
+        throw InputError("--seed " + std::to_string(seed) + " with --realisations " + std::to_string(count) +
+                         ": the forests' seeds (seed, seed + 1, ...) must stay within 0 to 4294967295, the 32 bits GSL's "
+                         "Mersenne twister keeps");
 
     const std::string stemsPath = vm["stems"].as<std::string>();
     const stand::Inventory inventory = stand::readInventory(stemsPath, vm["plots"].as<std::string>());

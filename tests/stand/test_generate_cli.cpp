@@ -82,6 +82,13 @@ TEST(GenerateCli, BadOptionsExitWithStatusTwoAndSayWhy) {
     r = generate("--structure random --extent 0,0,100,50 --seed -3" + out);
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.output.find("--seed"), std::string::npos) << r.output;
+    // GSL keeps 32 bits of a seed: 4294967297 would draw seed 1's forest, and the second forest from
+    // 4294967295 seed 0's.
+    for (const char* seeds : {"--seed 4294967297", "--seed 4294967295 --realisations 2"}) {
+        r = generate(std::string("--structure random --extent 0,0,100,50 ") + seeds + out);
+        EXPECT_EQ(r.status, 2) << seeds;
+        EXPECT_NE(r.output.find("must stay within 0 to 4294967295"), std::string::npos) << r.output;
+    }
 }
 
 // Figures for people (issue 13): the virtual forests' g(r) against the inventory's and its CSR

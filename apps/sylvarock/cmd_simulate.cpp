@@ -175,6 +175,12 @@ int runSimulate(int argc, const char* const* argv) {
                     100 * f.frozen / f.treeTerms(), 1e-6 * f.frozenPieces, 1e-6 * (f.frozen - f.frozenPieces),
                     100 * (f.frozen - f.frozenPieces) / f.treeTerms());
     std::printf("results in %s/\n", out.c_str());
+    // A block that left the terrain would have gone further: its run-out is a lower bound, and so is
+    // Dist50 once half the blocks left.
+    if (const auto left = s.stopReasons.find(dem::toString(dem::StopReason::LeftDomain)); left != s.stopReasons.end() && left->second > 0)
+        std::cerr << "sylvarock simulate: warning: " << left->second << " of " << s.runs - s.failedRuns
+                  << " runs left the terrain; their run-outs are where they left it, lower bounds"
+                  << (2 * left->second >= s.runs - s.failedRuns ? ", and so is Dist50 (a longer slope would tell)" : "") << "\n";
     if (s.failedRuns > 0) {
         std::cerr << "sylvarock simulate: " << s.failedRuns << " of " << s.runs
                   << " runs stopped on a numerical error and are left out of the statistics (stop_reason failed in "

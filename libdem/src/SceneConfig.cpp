@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <set>
 #include <sstream>
@@ -277,6 +278,28 @@ std::string overridesAsIni(const std::vector<std::string>& overrides) {
     return ini;
 }
 
+// The scene file's text, a UTF-8 byte-order mark (which some editors write) removed.
+std::string sceneText(const std::string& path) {
+    if (std::filesystem::is_directory(path)) throw InputError(path, 0, "is a folder, not a scene file");
+    std::ifstream in(path);
+    if (!in) throw InputError(path, 0, "cannot open scene file");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
+    return text;
+}
+
+// The line of the file holding `content` (its spaces trimmed), 0 if none: program_options names an
+// unreadable line by its text only.
+long lineHolding(const std::string& text, const std::string& content) {
+    std::istringstream lines(text);
+    std::string line;
+    for (long n = 1; std::getline(lines, line); ++n) {
+        const auto first = line.find_first_not_of(" \t\r"), last = line.find_last_not_of(" \t\r");
+        if (first != std::string::npos && line.substr(first, last - first + 1) == content) return n;
+    }
+    return 0;
+}
+
 // The value of stem.parameters (--set over the file), read first: it sets the other keys' defaults.
 StemParameterSet parameterSetOf(const std::string* path, const std::vector<std::string>& overrides) {
     po::options_description d;
@@ -288,8 +311,10 @@ StemParameterSet parameterSetOf(const std::string* path, const std::vector<std::
         std::istringstream setIni(overridesAsIni(overrides));
         po::store(po::parse_config_file(setIni, d, true), vm);
         fromSet = !vm["stem.parameters"].defaulted();
-        std::ifstream in(path ? *path : std::string());
-        if (path && in) po::store(po::parse_config_file(in, d, true), vm);
+        if (path) {
+            std::istringstream in(sceneText(*path));
+            po::store(po::parse_config_file(in, d, true), vm);
+        }
     } catch (const po::error&) {
         return StemParameterSet::Calibrated;  // the full parse below reports it with its context
     }
@@ -319,12 +344,17 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
         throw InputError(std::string("--set: ") + optionErrorMessage(e));
     }
     if (path) {
-        std::ifstream in(*path);
-        if (!in) throw InputError(*path, 0, "cannot open scene file");
+        const std::string text = sceneText(*path);
+        std::istringstream in(text);
         try {
             po::store(po::parse_config_file(in, d), vm);
         } catch (const po::error& e) {
-            throw InputError(*path, 0, optionErrorMessage(e));
+            const std::string message = optionErrorMessage(e), quoted = "invalid line '";
+            const auto at = message.find(quoted);
+            const long line = at == std::string::npos
+                                  ? 0
+                                  : lineHolding(text, message.substr(at + quoted.size(), message.rfind('\'') - at - quoted.size()));
+            throw InputError(*path, line, message);
         }
         c.sourceFile = *path;
     }

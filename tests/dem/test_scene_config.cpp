@@ -59,6 +59,27 @@ TEST(SceneConfigParser, BadInputNamesTheFileAndTheKey) {
     EXPECT_THROW(loadScene("/nonexistent/scene.ini"), sylva::InputError);
 }
 
+// A byte-order mark (some Windows editors write one) is not a line of the file; a line that is no
+// key = value is named by its number; a folder is not a scene.
+TEST(SceneConfigParser, ByteOrderMarkIsReadAndABadLineOrAFolderIsNamed) {
+    const std::string bom = writeScene("bom.ini", "\xEF\xBB\xBF[soil]\nfriction_deg = 25\n");
+    EXPECT_EQ(loadScene(bom).soilContact.frictionDeg, 25);
+    try {
+        loadScene(writeScene("junk.ini", "[soil]\nfriction_deg = 25\nthis is junk\n"));
+        FAIL() << "a line without '=' was accepted";
+    } catch (const sylva::InputError& e) {
+        EXPECT_EQ(e.line(), 3) << e.what();
+        EXPECT_NE(std::string(e.what()).find("'this is junk'"), std::string::npos) << e.what();
+    }
+    const std::string folder = std::filesystem::path(bom).parent_path().string();
+    try {
+        loadScene(folder);
+        FAIL() << "a folder was read as a scene";
+    } catch (const sylva::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("is a folder, not a scene file"), std::string::npos) << e.what();
+    }
+}
+
 // Found by tests/fuzz/fuzz_scene: Boost's message for a key holding '%canonical_option%' never came
 // back (its placeholder substitution loops); the message now comes, with the key as typed.
 TEST(SceneConfigParser, PercentInAKeyGivesItsMessageInsteadOfHanging) {

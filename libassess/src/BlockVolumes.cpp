@@ -32,6 +32,10 @@ std::vector<BlockVolumeClass> parseBlockVolumes(const std::string& text) {
         classes.push_back(c);
     }
     if (classes.empty()) throw InputError("--block-volumes: empty list (expected V1,V2,... or V1:W1,V2:W2,...)");
+    // The shares are the weights over their sum, which must not overflow.
+    double total = 0;
+    for (const auto& c : classes) total += c.weight;
+    if (!std::isfinite(total)) throw InputError("--block-volumes '" + text + "': the weights' sum overflows; they are relative, give smaller ones");
     return classes;
 }
 

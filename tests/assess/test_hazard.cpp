@@ -434,6 +434,7 @@ TEST_F(Hazard, BlockVolumesAreAListOfVolumesWithOptionalWeights) {
     EXPECT_NE(errorOf([] { parseBlockVolumes("1:-2"); }).find("a weight of -2 is not positive"), std::string::npos);
     EXPECT_NE(errorOf([] { parseBlockVolumes("1m3"); }).find("volume '1m3' is not a number"), std::string::npos);
     EXPECT_NE(errorOf([] { parseBlockVolumes(""); }).find("empty list"), std::string::npos);
+    EXPECT_NE(errorOf([] { parseBlockVolumes("0.2:1e308,1:1e308"); }).find("the weights' sum overflows"), std::string::npos);
 }
 
 // Each block draws its volume class from its own stream: the classes' shares follow the weights

@@ -16,13 +16,16 @@ std::vector<char> cellsInPolygons(GDALDataset& ds, const std::string& path, cons
     const RasterGrid& grid = dtm.grid;
     std::vector<std::unique_ptr<OGRGeometry>> polygons;
     for (OGRLayer* layer : ds.GetLayers()) {
-        requireDtmCrs(*layer, path, dtm);
+        const std::size_t before = polygons.size();
         for (auto& feature : *layer) {
             const OGRGeometry* g = feature->GetGeometryRef();
             if (!g) continue;
             const auto type = wkbFlatten(g->getGeometryType());
             if (type == wkbPolygon || type == wkbMultiPolygon) polygons.emplace_back(g->clone());
         }
+        // After the reading, and only for a layer with polygons: an empty GeoJSON layer reads as WGS 84,
+        // and its CRS is not what is wrong with it (the check reads the extent, which restarts the reading).
+        if (polygons.size() > before) requireDtmCrs(*layer, path, dtm);
     }
     if (polygons.empty()) throw InputError(path, 0, "no polygon in the file: a release area is a polygon layer");
     std::vector<char> inside(static_cast<std::size_t>(grid.columns) * grid.rows, 0);

@@ -179,6 +179,9 @@ TEST_F(Hazard, ReleaseErrorsSayWhatIsWrong) {
     const std::string points = write("p.geojson", R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {},
         "geometry": {"type": "Point", "coordinates": [700010, 6600010]}}]})");
     EXPECT_NE(errorOf([&] { readReleaseCells(points, d); }).find("no polygon"), std::string::npos);
+    // Empty, it was told to reproject (an empty GeoJSON layer reads as WGS 84).
+    const std::string empty = write("e.geojson", R"({"type": "FeatureCollection", "features": []})");
+    EXPECT_NE(errorOf([&] { readReleaseCells(empty, d); }).find("no polygon"), std::string::npos) << errorOf([&] { readReleaseCells(empty, d); });
     const Dtm holed = readDtm(dtm("h.asc", 6, 4, 5.0, 0, 0, [](int c, int r) { return c == 1 && r == 1 ? -9999.0 : 100.0 - 3 * c; }));
     EXPECT_NE(errorOf([&] { readReleaseCells(polygon("r.geojson", 4, 6, 16, 14), holed); }).find("NODATA hole"), std::string::npos);
 }

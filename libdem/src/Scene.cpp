@@ -24,7 +24,12 @@ stand::Forest singleTree(const SingleTreeConfig& t) {
 
 stand::Forest chooseForest(const SceneConfig& c, stand::Forest given) {
     if (c.tree.enabled) return singleTree(c.tree);
-    if (!c.forestFile.empty()) return stand::readForestCsv(c.forestFile);
+    if (!c.forestFile.empty()) {
+        stand::Forest f = stand::readForestCsv(c.forestFile);
+        // Run as bare ground, a header-only file would pass for a forest that stopped nothing.
+        if (f.trees.empty()) throw InputError(c.forestFile, 0, "no stem in the forest file (to run without forest, leave out forest.file or --forest)");
+        return f;
+    }
     return given;
 }
 

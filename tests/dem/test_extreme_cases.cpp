@@ -351,13 +351,17 @@ TEST(ExtremeRelease, StemOutsideTheTerrainNamesTheForestFileAndLine) {
 }
 
 // A stem thinner than the tip diameter cannot be built: refused at load with its line, whatever the
-// seed (it used to fail only in the runs whose block reached it).
-TEST(ExtremeRelease, StemThinnerThanTheTipIsRefusedAtLoadNamingTheLine) {
+// seed (it used to fail only in the runs whose block reached it). A file without stems is refused too.
+TEST(ExtremeRelease, StemThinnerThanTheTipOrNoStemIsRefusedAtLoad) {
     const std::string path = forestCsv("stem-thin", "5,10,25\n20,10,0.5\n");
     const std::string m = messageOf<sylva::InputError>([&] { Scene(straightSlope(35, {"forest.file=" + path})); });
     EXPECT_TRUE(mentions(m, path + ":3: stem 2: a DBH of 0.5 cm is not above the stems' tip diameter (stem.tip_diameter_m = 1 cm)")) << m;
     // Lowering the tip below it builds the stem.
     EXPECT_NO_THROW(Scene(straightSlope(35, {"forest.file=" + path, "stem.tip_diameter_m=0.004"})));
+    // A header and no stem is no forest (it ran as bare ground).
+    const std::string empty = forestCsv("stem-none", "");
+    const std::string none = messageOf<sylva::InputError>([&] { Scene(straightSlope(35, {"forest.file=" + empty})); });
+    EXPECT_TRUE(mentions(none, empty + ": no stem in the forest file")) << none;
 }
 
 // 500 m above the ground the release is inside the terrain's footprint: the block lands at 99 m/s.

@@ -37,10 +37,11 @@ private:
 
 double soilSpacing(double radius, double roughness) {
     if (!(radius > 0) || !std::isfinite(radius))
-        throw InputError("soil sphere radius must be positive, got " + std::to_string(radius));
+        throw InputError("terrain.soil_radius_m = " + readableNumber(radius) + ": the soil spheres' radius must be positive");
     if (!(roughness > 0) || !(roughness <= radius))
-        throw InputError("soil roughness must be in (0, R_soil = " + std::to_string(radius) + "], got " +
-                         std::to_string(roughness));
+        throw InputError("terrain.roughness_m = " + readableNumber(roughness) +
+                         ": the bump between soil spheres must be in (0, terrain.soil_radius_m = " + readableNumber(radius) +
+                         "] m (Fig. 6: a bump of 0 would stack the spheres on one point, one above the radius cannot be made)");
     // h = R - sqrt(R^2 - (d/2)^2) solved for d (Fig. 6)
     return 2.0 * std::sqrt(2.0 * radius * roughness - roughness * roughness);
 }

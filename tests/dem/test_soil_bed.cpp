@@ -93,6 +93,15 @@ TEST(SoilSpacing, RejectsImpossibleRoughness) {
     EXPECT_THROW(soilSpacing(0.7, 0.71), InputError);
     EXPECT_THROW(soilSpacing(0.0, 0.1), InputError);
     EXPECT_THROW(soilSpacing(0.7, NAN), InputError);
+    // The message names the keys a user sets, not the paper's symbols.
+    try {
+        soilSpacing(0.011, 0.1);
+        FAIL() << "a bump above the radius was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("terrain.roughness_m = 0.1: the bump between soil spheres must be in (0, terrain.soil_radius_m = 0.011] m"),
+                  std::string::npos)
+            << e.what();
+    }
 }
 
 TEST(SoilBed, RejectsANonPositiveWidth) {

@@ -64,11 +64,13 @@ FigureSet drawHazardMap(const std::string& outDir, const Dtm& dtm, const std::ve
     gp.precision(10);  // projected coordinates to the metre
     gp << "# The hazard map of sylvarock hazard; run `gnuplot figures.gp` in this folder to redraw it.\n"
        << "set terminal svg size " << px << ',' << py << " dynamic noenhanced font 'sans,11'\nset output '../map.svg'\n"
-       << "set title 'Reach probability (light yellow to dark red: 0 to " << topText << ") over the hillshade; trees in green'\n"
+       << "set title 'Reach probability (light yellow to dark red: 0 to " << topText << ") over the hillshade"
+       << (forest.trees.empty() ? "" : "; trees in green") << "'\n"
        << "set xlabel 'm east of " << west << "'\nset ylabel 'm north of " << south << "'\nset size ratio -1\n"
        << "set xrange [0:" << width << "]\nset yrange [0:" << height << "]\nunset key\n"
-       << "plot 'hillshade.dat' using 1:2:3:4:5 with rgbimage, 'reach.dat' using 1:2:3:4:5:6 with rgbalpha, "
-       << "'trees.dat' using 1:2 with dots lc rgb '#1e8449'\n"
+       << "plot 'hillshade.dat' using 1:2:3:4:5 with rgbimage, 'reach.dat' using 1:2:3:4:5:6 with rgbalpha"
+       // Without trees gnuplot would warn on stderr about the empty file.
+       << (forest.trees.empty() ? "" : ", 'trees.dat' using 1:2 with dots lc rgb '#1e8449'") << "\n"
        // The same map as a picture for a report or a mail, where an SVG is not welcome.
        << "set terminal pngcairo size " << px << ',' << py << " noenhanced font 'sans,10'\nset output '../map.png'\nreplot\nunset output\n";
     FigureSet set = runGnuplot(dir, gp.str(), {"../map.svg", "../map.png"});

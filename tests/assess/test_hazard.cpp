@@ -69,6 +69,16 @@ protected:
         o.compareBare = true;
         return o;
     }
+    // The same slope without trees, one pass, blocks drawn from `volumes` (parseBlockVolumes).
+    HazardOptions bareSlopeWithVolumes(int runsPerCell, const std::string& volumes, const std::string& out) const {
+        HazardOptions o = smallSlope();
+        o.treesPath.clear();
+        o.compareBare = false;
+        o.runsPerCell = runsPerCell;
+        o.blockVolumes = parseBlockVolumes(volumes);
+        o.outDir = (dir_ / out).string();
+        return o;
+    }
 };
 
 TEST_F(Hazard, DtmKeepsItsGridAndItsHeightsNorthUp) {
@@ -444,13 +454,7 @@ TEST_F(Hazard, BlockVolumesAreAListOfVolumesWithOptionalWeights) {
 // (400 blocks at 3:1, a binomial share of 0.75 with a standard deviation of 0.022: +-0.08 is 3.7 sd),
 // and the blocks of each class are counted in the summary.
 TEST_F(Hazard, BlocksDrawTheirVolumeFromTheDistribution) {
-    HazardOptions o = smallSlope();
-    o.treesPath.clear();
-    o.compareBare = false;
-    o.runsPerCell = 50;
-    o.blockVolumes = parseBlockVolumes("0.2:3,4:1");
-    o.outDir = (dir_ / "out").string();
-    const HazardResults r = runHazard(o);
+    const HazardResults r = runHazard(bareSlopeWithVolumes(50, "0.2:3,4:1", "out"));
     const HazardPass& p = r.passes.at(0);
     ASSERT_EQ(p.blocksPerVolume.size(), 2u);
     EXPECT_EQ(p.blocksPerVolume[0] + p.blocksPerVolume[1], p.blocks);
@@ -465,12 +469,7 @@ TEST_F(Hazard, BlocksDrawTheirVolumeFromTheDistribution) {
 // One volume is a distribution too (it once indexed an empty count), and a pass in which no block
 // could start writes no map: an all-zero one would read as ground no block reaches.
 TEST_F(Hazard, OneBlockVolumeIsCountedAndAPassWithoutBlocksWritesNoMap) {
-    HazardOptions o = smallSlope();
-    o.treesPath.clear();
-    o.compareBare = false;
-    o.runsPerCell = 2;
-    o.blockVolumes = parseBlockVolumes("2");
-    o.outDir = (dir_ / "one").string();
+    HazardOptions o = bareSlopeWithVolumes(2, "2", "one");
     const HazardPass p = runHazard(o).passes.at(0);
     ASSERT_EQ(p.blocksPerVolume.size(), 1u);
     EXPECT_EQ(p.blocksPerVolume[0], p.blocks);

@@ -274,7 +274,13 @@ HazardResults runHazard(const HazardOptions& o) {
     if (const long holes = dtm.elevation.noDataCells())
         throw InputError(o.dtmPath, 0, "the DTM has " + std::to_string(holes) + " NODATA cell(s); sylvarock hazard builds its soil over the " +
                                            "whole DTM: fill them (gdal_fillnodata.py) or crop the DTM to where it has heights (gdalwarp -te)");
-    const std::vector<ReleaseCell> cells = readReleaseCells(o.releasePath, dtm);
+    if (dtm.grid.crsWkt.empty() && o.onNote)
+        o.onNote(o.dtmPath + " names no CRS: the release, trees, stands and maps are taken in its coordinates as they are, unchecked");
+    bool releaseBeyond = false;
+    const std::vector<ReleaseCell> cells = readReleaseCells(o.releasePath, dtm, &releaseBeyond);
+    if (releaseBeyond && o.onNote)
+        o.onNote(o.releasePath + " reaches past the DTM's edges: only its part on the DTM releases blocks (" + std::to_string(cells.size()) +
+                 " cells)");
     std::vector<CheckLine> lines;
     if (!o.checkLinesPath.empty()) {
         int others = 0;

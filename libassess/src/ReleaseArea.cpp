@@ -11,8 +11,10 @@ namespace sylva::assess {
 
 namespace {
 
-// The DTM cells whose centre lies inside one of the polygons of the vector file.
-std::vector<char> cellsInPolygons(GDALDataset& ds, const std::string& path, const Dtm& dtm) {
+// The DTM cells whose centre lies inside one of the polygons of the vector file; `beyond` is set if a
+// polygon reaches past the DTM's outer edges (a polygon's bounding box is spanned by its vertices, so
+// the box past an edge means a vertex past it).
+std::vector<char> cellsInPolygons(GDALDataset& ds, const std::string& path, const Dtm& dtm, bool& beyond) {
     const RasterGrid& grid = dtm.grid;
     std::vector<std::unique_ptr<OGRGeometry>> polygons;
     for (OGRLayer* layer : ds.GetLayers()) {
@@ -28,6 +30,13 @@ std::vector<char> cellsInPolygons(GDALDataset& ds, const std::string& path, cons
         if (polygons.size() > before) requireDtmCrs(*layer, path, dtm);
     }
     if (polygons.empty()) throw InputError(path, 0, "no polygon in the file: a release area is a polygon layer");
+    const double west = grid.geoTransform[0], north = grid.geoTransform[3];
+    const double east = west + grid.columns * grid.cellSize(), south = north + grid.rows * grid.geoTransform[5];
+    for (const auto& polygon : polygons) {
+        OGREnvelope box;
+        polygon->getEnvelope(&box);
+        beyond = beyond || box.MinX < west || box.MaxX > east || box.MinY < south || box.MaxY > north;
+    }
     std::vector<char> inside(static_cast<std::size_t>(grid.columns) * grid.rows, 0);
     for (const auto& polygon : polygons) forEachCellCentreInside(*polygon, grid, [&](int c, int r) { inside[grid.index(c, r)] = 1; });
     return inside;
@@ -55,9 +64,11 @@ std::vector<char> cellsOnRaster(const std::string& path, const Dtm& dtm) {
 
 }  // namespace
 
-std::vector<ReleaseCell> readReleaseCells(const std::string& path, const Dtm& dtm) {
+std::vector<ReleaseCell> readReleaseCells(const std::string& path, const Dtm& dtm, bool* beyondDtm) {
     GDALDatasetUniquePtr vector = openVectorUnlessRaster(path);
-    const std::vector<char> inside = vector ? cellsInPolygons(*vector, path, dtm) : cellsOnRaster(path, dtm);
+    bool beyond = false;
+    const std::vector<char> inside = vector ? cellsInPolygons(*vector, path, dtm, beyond) : cellsOnRaster(path, dtm);
+    if (beyondDtm) *beyondDtm = beyond;
     const RasterGrid& grid = dtm.grid;
     std::vector<ReleaseCell> cells;
     for (int r = 0; r < grid.rows; ++r)

@@ -154,12 +154,17 @@ TEST_F(Hazard, ReleaseCellsAreTheCellsWhoseCentreIsInside) {
     const Dtm d = readDtm(dtm("d.asc", 6, 4, 5.0, 0, 0, [](int c, int) { return 100.0 - 3 * c; }));
     // Cell centres at 2.5, 7.5, 12.5, ... m: x in [4, 16] holds columns 1 and 2 (7.5, 12.5), y in [6, 14]
     // the centres 12.5 and 7.5, rows 1 and 2 counted from the north (the grid's top is y = 20).
-    const auto cells = readReleaseCells(polygon("r.geojson", 4, 6, 16, 14), d);
+    bool beyond = true;
+    const auto cells = readReleaseCells(polygon("r.geojson", 4, 6, 16, 14), d, &beyond);
     ASSERT_EQ(cells.size(), 4u);
     EXPECT_EQ(cells[0].column, 1);
     EXPECT_EQ(cells[0].row, 1);
     EXPECT_EQ(cells[3].column, 2);
     EXPECT_EQ(cells[3].row, 2);
+    EXPECT_FALSE(beyond);
+    // Past the east edge (x = 30): the cells on the DTM release, and the caller is told.
+    EXPECT_EQ(readReleaseCells(polygon("east.geojson", 24, 6, 40, 14), d, &beyond).size(), 2u);
+    EXPECT_TRUE(beyond);
 }
 
 // A release raster (Rockyfor3D's rockdensity.asc, say) on a coarser grid than the DTM: a DTM cell

@@ -17,7 +17,8 @@ struct ReleaseCell {
 // The release cells, in row-major order. InputError naming the file for: a file GDAL opens neither as
 // vector data nor as a raster, no polygon in any layer, a CRS other than the DTM's, a release that
 // covers no DTM cell centre (outside the DTM, smaller than a cell, a raster of zeros), and a release
-// cell whose height is NODATA.
-std::vector<ReleaseCell> readReleaseCells(const std::string& path, const Dtm& dtm);
+// cell whose height is NODATA. `beyondDtm`, if given, is set when a polygon reaches past the DTM's
+// edges (its part there releases nothing, which the caller may mention).
+std::vector<ReleaseCell> readReleaseCells(const std::string& path, const Dtm& dtm, bool* beyondDtm = nullptr);
 
 }  // namespace sylva::assess

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 
@@ -13,10 +14,10 @@
 namespace sylva::dem {
 
 namespace {
+// To the centimetre, in plain digits: projected coordinates (925 100 m) read in exponents as 9.251e+05.
 std::string where(const Vec3& p) {
     std::ostringstream os;
-    os.precision(4);
-    os << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
+    os << std::fixed << std::setprecision(2) << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
     return os.str();
 }
 
@@ -72,7 +73,8 @@ BlockMotion::BlockMotion(const Scene& scene, const Release& start)
         std::ostringstream os;
         os.precision(4);
         os << "the block is released inside the soil at " << where(start.position);
-        if (height <= 0) os << " (its centre " << -height << " m below the surface)";
+        if (height < 0) os << " (its centre " << -height << " m below the surface)";
+        if (height == 0) os << " (its centre on the surface)";
         throw InputError(cfg_.sourceFile, 0, os.str() + ": raise release.fall_height_m");
     }
     refuseStartInsideStem(scene);

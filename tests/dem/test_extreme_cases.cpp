@@ -327,6 +327,7 @@ TEST(ExtremeRelease, ReleaseInsideTheSoilIsRefusedNamingTheKey) {
     const SceneConfig c = flatGround({"release.fall_height_m=0"});
     const std::string m = messageOf<sylva::InputError>([&] { run(c); });
     EXPECT_TRUE(mentions(m, "inside the soil") && mentions(m, "release.fall_height_m")) << m;
+    EXPECT_TRUE(mentions(m, "(its centre on the surface)")) << m;  // not "-0 m below" it
     // Below the surface is refused where the key is read.
     const std::string below = messageOf<sylva::InputError>([] { flatGround({"release.fall_height_m=-3"}); });
     EXPECT_TRUE(mentions(below, "release.fall_height_m = -3: outside [0, 1000] m")) << below;

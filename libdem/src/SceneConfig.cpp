@@ -146,7 +146,7 @@ SceneKeys::SceneKeys(StemParameterSet set) : parameterSet(name(set)) {
     k.other("block.shape", shape, "cube | cuboid | sphere");
     k.number("block.volume_m3", b.volumeM3, aboveUpTo(0, 1000, "m^3", "", "litres typed as m^3? (above 1000 m^3 is a rock avalanche, not a rockfall)"), "volume of a cube or sphere block");
     const Range edge = aboveUpTo(0, 20, "m", "", "mm or cm typed as m?");
-    k.optionalNumber("block.d1_m", b.d1, edge, "cuboid edge 1");
+    k.optionalNumber("block.d1_m", b.d1, edge, "cuboid edge 1; on a cube, its edge: the volume is then d1^3, whatever block.volume_m3 says");
     k.optionalNumber("block.d2_m", b.d2, edge, "cuboid edge 2");
     k.optionalNumber("block.d3_m", b.d3, edge, "cuboid edge 3");
     k.number("block.density_kg_m3", b.densityKgM3, closed(500, 8000, "kg/m^3", "t/m^3 typed as kg/m^3?"), "(Table 2: 2700)");

@@ -81,9 +81,11 @@ FigureSet drawHazardMap(const std::string& outDir, const Dtm& dtm, const std::ve
 namespace {
 
 // A name inside a gnuplot single-quoted string, where a quote is written twice.
+// A single-quoted gnuplot string: a quote doubled, and a line break (a name a GIS let through) a
+// space, since a gnuplot command ends at the line's end.
 std::string gnuplotQuoted(const std::string& s) {
     std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("''") : std::string(1, c);
+    for (char c : s) q += c == '\'' ? std::string("''") : c == '\n' || c == '\r' ? std::string(" ") : std::string(1, c);
     return q + "'";
 }
 

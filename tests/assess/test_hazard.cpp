@@ -6,6 +6,7 @@
 #include <sqlite3.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -13,7 +14,9 @@
 #include <string>
 
 #include "GeoTestFolder.hpp"
+#include "libassess/CheckLines.hpp"
 #include "libassess/GeoRaster.hpp"
+#include "libassess/HazardFigure.hpp"
 #include "libassess/HazardMap.hpp"
 #include "libassess/HazardRun.hpp"
 #include "libassess/ReleaseArea.hpp"
@@ -339,6 +342,21 @@ TEST_F(Hazard, SmallSlopeEndToEnd) {
     o.outDir = (dir_ / "holed").string();
     EXPECT_NE(errorOf([&] { runHazard(o); }).find("the DTM has 1 NODATA cell(s)"), std::string::npos);
     EXPECT_FALSE(fs::exists(dir_ / "holed"));
+}
+
+// A line's name is the user's: a line break in it (a GIS lets one through) once ended a gnuplot
+// command midway, and no figure came.
+TEST_F(Hazard, ACheckLineNameWithALineBreakIsDrawn) {
+    if (std::system("gnuplot --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "gnuplot not installed";
+    CheckLineTally::LineSample sample;
+    sample.pass = "forest";
+    sample.line = "road\nbelow";
+    sample.blocks = 3;
+    sample.energyKj = {10, 20, 30};
+    sample.heightM = {0.5, 1, 2};
+    const FigureSet f = drawCheckLines((dir_ / "lines").string(), {sample});
+    EXPECT_EQ(f.warning, "");
+    EXPECT_NE(std::find(f.files.begin(), f.files.end(), "check_lines.png"), f.files.end());
 }
 
 // The outputs beside the rasters, on the small slope: a check line just below the release that every

@@ -221,15 +221,15 @@ HazardPass runPass(const std::string& name, const BlockVolumeScenes& blocks, con
         path.push_back(t.pathLengthM);
         reach.push_back(t.reachM);
     }
+    // Before any of the pass's outputs: a map made of no block would read as ground no block reaches.
+    if (pass.blocks == 0)
+        throw std::runtime_error("every one of the " + std::to_string(pass.failed) + " runs of the " + name +
+                                 " pass failed (the notes above say why): no map is written");
     if (outputs.checkLines) outputs.checkLines->setBlocks(name, pass.blocks);
     if (outputs.paths) {
         if (o.writeTrajectories) writePathLayers(o.outDir + "/trajectories.gpkg", dtm, name, keptPaths, keptImpacts);
         if (o.writeVtk) writeVtkPaths(o.outDir + "/vtk", name, keptPaths);
     }
-    // A map made of no block would read as ground no block reaches.
-    if (pass.blocks == 0)
-        throw std::runtime_error("every one of the " + std::to_string(pass.failed) + " runs of the " + name +
-                                 " pass failed (the notes above say why): no map is written");
     if (!path.empty()) {
         pass.pathP50 = dem::quantile(path, 0.5);
         pass.pathP90 = dem::quantile(path, 0.9);

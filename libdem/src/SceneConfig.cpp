@@ -300,8 +300,9 @@ long lineHolding(const std::string& text, const std::string& content) {
     return 0;
 }
 
-// The value of stem.parameters (--set over the file), read first: it sets the other keys' defaults.
-StemParameterSet parameterSetOf(const std::string* path, const std::vector<std::string>& overrides) {
+// The value of stem.parameters (--set over the file, whose text is `text`), read first: it sets the
+// other keys' defaults.
+StemParameterSet parameterSetOf(const std::string* path, const std::string& text, const std::vector<std::string>& overrides) {
     po::options_description d;
     std::string set = "calibrated";
     d.add_options()("stem.parameters", po::value(&set)->default_value(set));
@@ -312,7 +313,7 @@ StemParameterSet parameterSetOf(const std::string* path, const std::vector<std::
         po::store(po::parse_config_file(setIni, d, true), vm);
         fromSet = !vm["stem.parameters"].defaulted();
         if (path) {
-            std::istringstream in(sceneText(*path));
+            std::istringstream in(text);
             po::store(po::parse_config_file(in, d, true), vm);
         }
     } catch (const po::error&) {
@@ -328,7 +329,8 @@ StemParameterSet parameterSetOf(const std::string* path, const std::vector<std::
 }
 
 SceneConfig load(const std::string* path, const std::vector<std::string>& overrides) {
-    SceneKeys keys(parameterSetOf(path, overrides));
+    const std::string fileText = path ? sceneText(*path) : std::string();  // read once, for both parses
+    SceneKeys keys(parameterSetOf(path, fileText, overrides));
     SceneConfig& c = keys.c;
     const std::string &shape = keys.shape, &orientation = keys.orientation, &reading = keys.reading, &damping = keys.damping,
                       &anchorage = keys.anchorage, &treeReach = keys.treeReach;
@@ -344,8 +346,7 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
         throw InputError(std::string("--set: ") + optionErrorMessage(e));
     }
     if (path) {
-        const std::string text = sceneText(*path);
-        std::istringstream in(text);
+        std::istringstream in(fileText);
         try {
             po::store(po::parse_config_file(in, d), vm);
         } catch (const po::error& e) {
@@ -353,7 +354,7 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
             const auto at = message.find(quoted);
             const long line = at == std::string::npos
                                   ? 0
-                                  : lineHolding(text, message.substr(at + quoted.size(), message.rfind('\'') - at - quoted.size()));
+                                  : lineHolding(fileText, message.substr(at + quoted.size(), message.rfind('\'') - at - quoted.size()));
             throw InputError(*path, line, message);
         }
         c.sourceFile = *path;

@@ -96,6 +96,13 @@ Release drawRelease(const Scene& scene, std::uint64_t seed, const std::optional<
     return {Vec3(rel.x, y, soil.surfaceHeight(rel.x, y) + rel.fallHeight), q};
 }
 
+void RunResult::setStop(const Vec3& where, const SoilBed& soil, const SurfacePath& path) {
+    stop = where;
+    runoutAlongSlope = sylva::dem::runoutAlongSlope(soil, release, stop, path);
+    runoutHorizontal = (stop - release).head<2>().norm();
+    energyLineDeg = std::atan2(release.z() - stop.z(), runoutHorizontal) * 180 / M_PI;
+}
+
 RunResult failedRun(const Scene& scene, int run, std::uint64_t seed, const std::string& why) {
     RunResult r;
     r.run = run;
@@ -162,11 +169,8 @@ RunResult simulateBlock(const Scene& scene, int run, std::uint64_t seed, const R
     r.nodeSteps = motion.nodeSteps();
     r.duration = motion.time();
     r.meanDt = r.duration / std::max(1L, r.steps);
-    r.stop = block.position;
     r.meanSpeed = movingTime > 0 ? movingDistance / movingTime : 0;
-    r.runoutAlongSlope = runoutAlongSlope(soil, r.release, r.stop, path);
-    r.runoutHorizontal = (r.stop - r.release).head<2>().norm();
-    r.energyLineDeg = r.runoutHorizontal > 0 ? std::atan2(r.release.z() - r.stop.z(), r.runoutHorizontal) * 180 / M_PI : 0;
+    r.setStop(block.position, soil, path);
     r.energy = motion.energy();
     r.impacts = motion.forest().finish(block);
     r.forestEnergy = motion.forest().ledger();

@@ -176,11 +176,8 @@ RunResult simulateLumped(const Scene& scene, int run, std::uint64_t seed, const 
     r.cpuSeconds = threadCpuSeconds() - cpu0;
     r.duration = t;
     r.meanDt = r.duration / std::max(1L, r.steps);
-    r.stop = p;
     r.meanSpeed = movingTime > 0 ? movingDistance / movingTime : 0;
-    r.runoutAlongSlope = runoutAlongSlope(soil, r.release, r.stop, path);
-    r.runoutHorizontal = (r.stop - r.release).head<2>().norm();
-    r.energyLineDeg = r.runoutHorizontal > 0 ? std::atan2(r.release.z() - r.stop.z(), r.runoutHorizontal) * 180 / M_PI : 0;
+    r.setStop(p, soil, path);
     return r;
 }
 

@@ -27,7 +27,7 @@ double sphereRadius(double volume) { return std::cbrt(3 * volume / (4 * M_PI)); 
 }  // namespace
 
 // Soil type 0 (R_n = 0) on flat ground: the sphere falls freely, lands, keeps no velocity and stops
-// where it landed, after the fall time of its lowest point through fall height - radius.
+// where it landed (energy line 90 degrees), after the fall time of its lowest point through fall height - radius.
 TEST(LumpedRun, FallsFreelyAndStopsOnASoilThatTakesEverything) {
     const Scene scene(sceneFromOverrides({"terrain.profile=" + std::string(SYLVAROCK_DATA) + "/slopes/flat.csv",
                                           "terrain.width_m=20", "release.x_m=30", "release.y_m=10",
@@ -39,6 +39,9 @@ TEST(LumpedRun, FallsFreelyAndStopsOnASoilThatTakesEverything) {
     EXPECT_NEAR(r.stop.x(), 30, 1e-12);
     EXPECT_NEAR(r.stop.y(), 10, 1e-12);
     EXPECT_NEAR(r.maxSpeed, std::sqrt(2 * 9.81 * drop), 1e-5);
+    // It dropped where it was released: no run-out, and the energy line is vertical (it read 0).
+    EXPECT_NEAR(r.runoutHorizontal, 0, 1e-12);
+    EXPECT_NEAR(r.energyLineDeg, 90, 1e-9);
 }
 
 // v = (3, 0, -4) on flat ground, no deviation: the tangential part comes back as R_t = 1/(1 + h/R)

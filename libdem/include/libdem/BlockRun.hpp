@@ -13,6 +13,9 @@
 
 namespace sylva::dem {
 
+class SoilBed;
+class SurfacePath;
+
 // Failed: the run stopped on a SimulationError (its message in RunResult::failure); it has no
 // run-out and campaigns leave it out of their statistics.
 enum class StopReason { Rest, LeftDomain, TimeLimit, Failed };
@@ -67,6 +70,10 @@ struct RunResult {
     ForestLedger forestEnergy;
     std::vector<TrajectorySample> trajectory;  // filled when asked for
     std::string failure;  // StopReason::Failed: what stopped it
+
+    // Where the block stopped and the run-outs that follow: along the path, horizontal, and the
+    // energy line's angle (90 degrees for a block that dropped where it was released).
+    void setStop(const Vec3& where, const SoilBed& soil, const SurfacePath& path);
 };
 
 struct RunOptions {

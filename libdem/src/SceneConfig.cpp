@@ -156,7 +156,7 @@ SceneKeys::SceneKeys(StemParameterSet set) : parameterSet(name(set)) {
     k.optionalNumber("release.y_max_m", r.yMax, coordinate, "");
     k.number("release.forest_y_min_m", r.forestYMin, coordinate, "with a forest and no y range: y uniform in [forest_y_min_m, forest_y_max_m] (Sect. 2.3.2)");
     k.number("release.forest_y_max_m", r.forestYMax, coordinate, "");
-    k.number("release.fall_height_m", r.fallHeight, closed(0, 1000, "m"), "block centre above the surface");
+    k.number("release.fall_height_m", r.fallHeight, aboveUpTo(0, 1000, "m"), "block centre above the surface, clear of the soil (more than the block's half-size above it)");
     k.other("release.orientation", orientation, "random (angles in [0,180) deg about x,y,z) | fixed");
     k.optionalNumber("block.speed_m_s", c.launch.speed, closed(0, 100, "m/s", "", "km/h typed as m/s? (rockfall rarely exceeds 40 m/s)"), "single-tree scenes: launch the block at this speed toward the tree (+x)");
     k.number("block.impact_height_m", c.launch.impactHeight, aboveUpTo(0, 30, "m", "", "cm typed as m?"), "... its centre this high above the stem's foot");

@@ -501,7 +501,7 @@ TEST_F(Hazard, OneBlockVolumeIsCountedAndAPassWithoutBlocksWritesNoMap) {
     o.blockVolumes.clear();
     o.model = sylva::dem::Model::Dem;
     o.runsPerCell = 1;
-    o.sceneOverrides = {"release.fall_height_m=0"};  // every block starts inside the soil
+    o.sceneOverrides = {"release.fall_height_m=0.1"};  // every block starts inside the soil
     o.outDir = (dir_ / "none").string();
     std::string message = "(no error)";
     try {

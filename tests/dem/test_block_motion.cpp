@@ -137,7 +137,7 @@ TEST(BlockOnSlope, ForcedStepAboveTheStableLimitIsRefused) {
 }
 
 TEST(BlockOnSlope, BlockReleasedInsideTheSoilIsAnInputError) {
-    const Scene scene(straightSlopeScene(30, 60, 10, {"release.fall_height_m=0", "release.x_m=10", "release.y_m=5"}));
+    const Scene scene(straightSlopeScene(30, 60, 10, {"release.fall_height_m=0.1", "release.x_m=10", "release.y_m=5"}));
     EXPECT_THROW(BlockMotion(scene, drawRelease(scene, 1)), sylva::InputError);
 }
 

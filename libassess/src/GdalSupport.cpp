@@ -49,4 +49,10 @@ void requireDtmCrs(OGRLayer& layer, const std::string& path, const Dtm& dtm) {
                                       crsName(dtm.grid.crsWkt) + ": reproject it (ogr2ogr -t_srs) to the DTM's CRS");
 }
 
+void requireValidPolygon(const OGRGeometry& polygon, const std::string& path, const std::string& where) {
+    if (!OGRGeometryFactory::haveGEOS() || polygon.IsValid()) return;
+    throw InputError(path, 0, where + ": the polygon is not valid (a ring crosses itself or another, or is degenerate), so its inside "
+                                      "is undefined: repair it (ogr2ogr -makevalid) or redraw it");
+}
+
 }  // namespace sylva::assess

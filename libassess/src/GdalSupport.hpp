@@ -30,6 +30,11 @@ GDALDatasetUniquePtr openVectorUnlessRaster(const std::string& path);
 // degrees, it was written in a projected CRS without saying which, and is taken to be in the DTM's.
 void requireDtmCrs(OGRLayer& layer, const std::string& path, const Dtm& dtm);
 
+// InputError naming the file and `where` (its layer and feature) for a polygon that GEOS finds
+// invalid, such as a ring crossing itself: which cells lie inside it is then undefined (GEOS's
+// Contains fails on it and says no for every cell).
+void requireValidPolygon(const OGRGeometry& polygon, const std::string& path, const std::string& where);
+
 // Calls visit(column, row) for each cell of the grid whose centre lies inside the polygon.
 template <class Visit>
 void forEachCellCentreInside(const OGRGeometry& polygon, const RasterGrid& grid, Visit visit) {

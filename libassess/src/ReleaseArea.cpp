@@ -19,11 +19,15 @@ std::vector<char> cellsInPolygons(GDALDataset& ds, const std::string& path, cons
     std::vector<std::unique_ptr<OGRGeometry>> polygons;
     for (OGRLayer* layer : ds.GetLayers()) {
         const std::size_t before = polygons.size();
+        long featureNumber = 0;
         for (auto& feature : *layer) {
+            ++featureNumber;
             const OGRGeometry* g = feature->GetGeometryRef();
             if (!g) continue;
             const auto type = wkbFlatten(g->getGeometryType());
-            if (type == wkbPolygon || type == wkbMultiPolygon) polygons.emplace_back(g->clone());
+            if (type != wkbPolygon && type != wkbMultiPolygon) continue;
+            requireValidPolygon(*g, path, "layer '" + std::string(layer->GetName()) + "', feature " + std::to_string(featureNumber));
+            polygons.emplace_back(g->clone());
         }
         // After the reading, and only for a layer with polygons: an empty GeoJSON layer reads as WGS 84,
         // and its CRS is not what is wrong with it (the check reads the extent, which restarts the reading).

@@ -53,6 +53,7 @@ void zonesFromPolygons(GDALDataset& ds, const std::string& path, const std::vect
             any = true;
             const std::string where = "layer '" + std::string(layer->GetName()) + "', feature " + std::to_string(++feature);
             if (field < 0) throw InputError(path, 0, "layer '" + std::string(layer->GetName()) + "' has polygons but no field `soil` (a soil type's name)");
+            requireValidPolygon(*g, path, where);
             const std::string name = f->IsFieldSetAndNotNull(field) ? f->GetFieldAsString(field) : "";
             const auto it = zoneOf.find(name);
             if (it == zoneOf.end()) {

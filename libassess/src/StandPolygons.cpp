@@ -134,6 +134,7 @@ StandForest readStandPolygons(const std::string& path, const Dtm& dtm, std::uint
                                               "' has polygons but no field `stand` (each stand's inventory prefix, e.g. data/stands/MO1)");
             if (!f->IsFieldSetAndNotNull(standField) || std::string(f->GetFieldAsString(standField)).empty())
                 throw InputError(path, 0, where + ": `stand` is empty (the stand's inventory prefix, e.g. data/stands/MO1)");
+            requireValidPolygon(*g, path, where);
             StandPolygon s;
             s.feature = feature;
             s.inventory = resolveInventory(f->GetFieldAsString(standField), path, where);

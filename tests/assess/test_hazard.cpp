@@ -200,6 +200,13 @@ TEST_F(Hazard, ReleaseErrorsSayWhatIsWrong) {
     // Empty, it was told to reproject (an empty GeoJSON layer reads as WGS 84).
     const std::string empty = write("e.geojson", R"({"type": "FeatureCollection", "features": []})");
     EXPECT_NE(errorOf([&] { readReleaseCells(empty, d); }).find("no polygon"), std::string::npos) << errorOf([&] { readReleaseCells(empty, d); });
+    // A bow tie (its ring crosses itself) has no defined inside: GEOS's Contains said no for every
+    // cell and the error blamed the polygon's size or place.
+    const std::string bowTie = write("bowtie.geojson", R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {},
+        "geometry": {"type": "Polygon", "coordinates": [[[700002, 6600002], [700028, 6600018], [700028, 6600002], [700002, 6600018], [700002, 6600002]]]}}]})");
+    const std::string crossed = errorOf([&] { readReleaseCells(bowTie, d); });
+    EXPECT_NE(crossed.find("layer 'bowtie', feature 1: the polygon is not valid"), std::string::npos) << crossed;
+    EXPECT_NE(crossed.find("ogr2ogr -makevalid"), std::string::npos) << crossed;
     const Dtm holed = readDtm(dtm("h.asc", 6, 4, 5.0, 0, 0, [](int c, int r) { return c == 1 && r == 1 ? -9999.0 : 100.0 - 3 * c; }));
     EXPECT_NE(errorOf([&] { readReleaseCells(polygon("r.geojson", 4, 6, 16, 14), holed); }).find("NODATA hole"), std::string::npos);
 }

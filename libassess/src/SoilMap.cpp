@@ -1,5 +1,6 @@
 #include "libassess/SoilMap.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -155,6 +156,10 @@ std::shared_ptr<dem::SoilZones> readSoilZones(const std::string& mapPath, const 
         zonesFromPolygons(*vector, mapPath, types, dtm, *zones);
     else
         zonesFromRaster(mapPath, types, dtm, *zones);
+    // A map that reaches no cell would leave the scene's soil everywhere without a word.
+    if (std::all_of(zones->zone.begin(), zones->zone.end(), [](std::uint16_t k) { return k == 0; }))
+        throw InputError(mapPath, 0, "it places no soil type on any cell centre of the DTM (" + dtm.path +
+                                         "): is it outside it, in other coordinates, or all NODATA?");
     return zones;
 }
 

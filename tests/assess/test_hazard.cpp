@@ -576,6 +576,11 @@ TEST_F(Hazard, SoilMapPlacesTheTypesOnTheDtmsCells) {
         {"type": "Feature", "properties": {"soil": "scree"}, "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [20, 0], [20, 20], [0, 20], [0, 0]]]}},
         {"type": "Feature", "properties": {"soil": "rock"}, "geometry": {"type": "Polygon", "coordinates": [[[10, 0], [30, 0], [30, 20], [10, 20], [10, 0]]]}}]})");
     EXPECT_NE(errorOf([&] { readSoilZones(overlapping, types, d, scene); }).find("a cell has one soil"), std::string::npos);
+    // A map beside the DTM (here 1 km east) changed nothing and said nothing.
+    const std::string beside = write("b.geojson", R"({"type": "FeatureCollection", "features": [
+        {"type": "Feature", "properties": {"soil": "rock"}, "geometry": {"type": "Polygon", "coordinates": [[[1000, 0], [1030, 0], [1030, 20], [1000, 20], [1000, 0]]]}}]})");
+    EXPECT_NE(errorOf([&] { readSoilZones(beside, types, d, scene); }).find("it places no soil type on any cell centre of the DTM"), std::string::npos)
+        << errorOf([&] { readSoilZones(beside, types, d, scene); });
 }
 
 // On the example's slope (data/hazard/), the DEM's blocks, paired (the same release points and

@@ -298,11 +298,16 @@ HazardResults runHazard(const HazardOptions& o) {
                          " a pass keeps in memory: fewer runs per cell, or split the release area");
     dem::SceneConfig config = o.sceneFile.empty() ? dem::sceneFromOverrides(o.sceneOverrides) : dem::loadScene(o.sceneFile, o.sceneOverrides);
     if (!config.terrain.profile.empty() || !config.terrain.dtm.empty()) {
-        if (o.onNote) o.onNote("the scene's terrain (" + (config.terrain.profile.empty() ? config.terrain.dtm : config.terrain.profile) +
+        if (o.onNote) o.onNote("the scene's terrain (" + (config.terrain.profile.empty() ? config.terrain.dtm : config.terrain.profile + " and terrain.width_m") +
                                ") is replaced by the DTM " + o.dtmPath);
         config.terrain.profile.clear();
         config.terrain.dtm.clear();
     }
+    // The blocks start in the release cells: a release point set in the scene would do nothing unsaid.
+    const dem::ReleaseConfig unset;
+    const dem::ReleaseConfig& r = config.release;
+    if (o.onNote && (r.x != unset.x || r.y != unset.y || r.yRangeGiven || r.forestYMin != unset.forestYMin || r.forestYMax != unset.forestYMax))
+        o.onNote("the scene's release point (release.x_m, release.y_m and their ranges) is replaced by the release cells of " + o.releasePath);
     if (!config.forestFile.empty()) throw InputError(o.sceneFile, 0, "the scene places a forest: give the trees with --trees");
     if (config.launch.enabled) throw InputError("a single-tree launch (block.speed_m_s) has no place in a hazard map");
     config.trajectoryInterval = std::min(config.trajectoryInterval, kMaxSampleInterval);

@@ -5,6 +5,7 @@
 #include <ogrsf_frmts.h>
 #include <sqlite3.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -494,6 +495,22 @@ TEST_F(Hazard, BlocksDrawTheirVolumeFromTheDistribution) {
     const std::string text((std::istreambuf_iterator<char>(summary)), std::istreambuf_iterator<char>());
     EXPECT_NE(text.find("\"block_volumes\""), std::string::npos);
     EXPECT_NE(text.find("\"volume_m3\": 4"), std::string::npos);
+}
+
+// The blocks start in the release cells: a release point set in the scene does nothing, and says so
+// (the probe's release.x_m=30 changed no map and no word was said).
+TEST_F(Hazard, AReleasePointInTheSceneIsSaidToBeReplaced) {
+    const auto notesOf = [&](std::vector<std::string> overrides, const std::string& out) {
+        HazardOptions o = bareSlopeWithVolumes(1, "1", out);
+        o.sceneOverrides = std::move(overrides);
+        std::vector<std::string> notes;
+        o.onNote = [&notes](const std::string& n) { notes.push_back(n); };
+        runHazard(o);
+        return std::count_if(notes.begin(), notes.end(), [](const std::string& n) { return n.find("release point") != std::string::npos; });
+    };
+    EXPECT_EQ(notesOf({"release.x_m=30"}, "x"), 1);
+    EXPECT_EQ(notesOf({"release.y_min_m=5", "release.y_max_m=9"}, "range"), 1);
+    EXPECT_EQ(notesOf({}, "none"), 0);
 }
 
 // One volume is a distribution too (it once indexed an empty count), and a pass in which no block

@@ -76,6 +76,18 @@ BlockMotion::BlockMotion(const Scene& scene, const Release& start)
         if (height < 0) os << " (its centre " << -height << " m below the surface)";
         throw InputError(cfg_.sourceFile, 0, os.str() + ": raise release.fall_height_m");
     }
+    // K_n holds the block up by overlap: if its weight on one contact would press it deeper than a
+    // soil sphere's radius, it sinks through the bed and the contacts' geometry loses its meaning
+    // (soil.kn_n_m = 1 was stopped by the energy audit as a step too large, which it is not).
+    const double sag = block_.mass() * cfg_.gravity / cfg_.soilContact.kn;
+    if (sag > soil_.radius()) {
+        std::ostringstream os;
+        os.precision(3);
+        os << "soil.kn_n_m = " << cfg_.soilContact.kn << " N/m: the block's weight (" << block_.mass() * cfg_.gravity / 1000
+           << " kN) on one contact would press it " << sag << " m into the soil, more than a soil sphere's radius ("
+           << soil_.radius() << " m), and no contact could hold it up: K_n is in N/m (Table 2: 1e6)";
+        throw InputError(cfg_.sourceFile, 0, os.str());
+    }
     refuseStartInsideStem(scene);
     anticipatedStiffness_ = cfg_.integration.anticipatedContacts * law_.largestNormalStiffness();
     budget_.initialTotal = block_.kineticEnergy() + block_.mass() * cfg_.gravity * block_.position.z();

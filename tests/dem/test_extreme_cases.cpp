@@ -335,6 +335,16 @@ TEST(ExtremeRelease, ReleaseInsideTheSoilIsRefusedNamingTheKey) {
     }
 }
 
+// A soil spring too soft to hold the block up (its weight on one contact would press it deeper than a
+// soil sphere's radius: 1 350 kg on 1 N/m sinks 13 km) is refused by name; it used to be stopped by
+// the energy audit, blamed on the time step. Table 2's 1e6 N/m presses the block 1.3 cm.
+TEST(ExtremeRelease, ASoilSpringThatCannotHoldTheBlockIsRefusedByName) {
+    const std::string m = messageOf<sylva::InputError>([] { run(flatGround({"soil.kn_n_m=1"})); });
+    EXPECT_TRUE(mentions(m, "soil.kn_n_m = 1 N/m") && mentions(m, "more than a soil sphere's radius (0.7 m)")) << m;
+    EXPECT_FALSE(mentions(m, "time step")) << m;
+    EXPECT_NO_THROW(run(flatGround({"soil.kn_n_m=1e6", "stop.max_time_s=2"})));
+}
+
 TEST(ExtremeRelease, ReleaseOutsideTheTerrainIsRefused) {
     for (const char* where : {"release.x_m=100", "release.y_m=-5"}) {
         const SceneConfig c = flatGround({where});

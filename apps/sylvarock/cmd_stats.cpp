@@ -67,6 +67,19 @@ StandPcf standPairCorrelation(const stand::Inventory& inv, const po::variables_m
     s.plots = stand::plotPoints(inv);
     s.rmax = vm.count("pcf-rmax") ? vm["pcf-rmax"].as<double>() : stand::defaultPairCorrelationRmax(s.plots);
     if (!(s.rmax > 0)) throw InputError("--pcf-rmax: must be > 0");
+    // Past a plot's shortest side some directions hold no pair of it, and the edge corrections
+    // divide by a window overlap of zero: g(r) read 0 there, as if no stems stood so far apart.
+    for (std::size_t i = 0; i < s.plots.size(); ++i) {
+        const Eigen::Vector2d frame = s.plots[i].window.upper() - s.plots[i].window.lower();
+        if (s.rmax >= frame.minCoeff()) {
+            std::ostringstream os;
+            os << "--pcf-rmax " << s.rmax << " m reaches past the " << frame.minCoeff() << " m shortest side of "
+               << (s.plots.size() == 1 ? "the window" : "plot " + inv.plots[i].id)
+               << ", where g(r) is undefined (no pair in some directions): give less (spatstat's rule, the default here, is "
+               << stand::defaultPairCorrelationRmax(s.plots) << " m)";
+            throw InputError(os.str());
+        }
+    }
     const long nr = vm["pcf-nr"].as<long>();
     if (nr < 2) throw InputError("--pcf-nr: need at least 2 values of r");
     s.nr = static_cast<std::size_t>(nr);
@@ -114,7 +127,7 @@ int runStats(int argc, const char* const* argv) {
         ("pcf-out", po::value<std::string>(),
          "write g(r) as CSV r,g_trans,g_iso (an inventory's: per-plot estimates averaged with weights n(n-1))")
         ("pcf-rmax", po::value<double>(), "largest r of g(r), m (default: spatstat's rule, a quarter of the "
-                                          "shortest plot side or less)")
+                                          "shortest plot side or less; refused from the shortest side on, where g(r) is undefined)")
         ("pcf-nr", po::value<long>()->default_value(513), "number of r values from 0 to rmax")
         ("pcf-exact", "evaluate the kernel sums of g(r) exactly instead of as spatstat (R's binned density)")
         ("plot-dir", po::value<std::string>(),

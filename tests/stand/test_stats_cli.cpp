@@ -169,6 +169,16 @@ TEST(StatsCli, InconsistentOptionsExit2) {
     const CliRun r = stats("--points " + data("points_ok.csv") + " --window-wkt 'POLYGON((0 0, 1 1))'");
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find("--window-wkt"), std::string::npos) << r.err;
+    // g(r) past a window's shortest side is undefined (it read 0 there, and was written so).
+    const std::string csv = ::testing::TempDir() + "/stats_cli_far.csv";
+    std::filesystem::remove(csv);
+    const CliRun far = stats("--points " + td::spatstatDir() + "spruces_points.csv --window 0,0,56,38 --pcf-rmax 38 --pcf-out " + csv);
+    EXPECT_EQ(far.status, 2);
+    EXPECT_NE(far.err.find("--pcf-rmax 38 m reaches past the 38 m shortest side of the window"), std::string::npos) << far.err;
+    EXPECT_FALSE(std::filesystem::exists(csv));
+    const CliRun inventory = stats("--stems " + stand("MO1_stems.csv") + " --plots " + stand("MO1_plots.csv") + " --pcf-rmax 500 --pcf-out " + csv);
+    EXPECT_EQ(inventory.status, 2);
+    EXPECT_NE(inventory.err.find("shortest side of plot 1"), std::string::npos) << inventory.err;
 }
 
 }  // namespace

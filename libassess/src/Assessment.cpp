@@ -41,6 +41,11 @@ Inputs readInputs(const AssessmentOptions& options, const std::function<void(con
         stand::Inventory inventory = stand::readInventory(s.stemsCsv, s.plotsCsv);
         inventory.name = s.name;
         for (const auto& w : inventory.warnings) note("stand " + s.name + ": warning: " + w);
+        // Its forests draw their density, diameters and aggregation from these stems alone.
+        constexpr std::size_t kFewStems = 10;
+        if (inventory.stems.size() < kFewStems)
+            note("stand " + s.name + ": warning: its inventory holds " + std::to_string(inventory.stems.size()) +
+                 " stem(s): its forests' density, diameters and aggregation rest on them alone, and its PF50 with them");
         in.inventories.push_back(summariseInventory(stand::standStatistics(inventory), inventory.hasDiameters));
         in.catalogues.emplace_back(inventory, s.stemsCsv);
     }

@@ -122,6 +122,33 @@ std::vector<std::string> dataWarnings(const Inventory& inv, const std::string& s
                                    stems[i - 1]->id + "' (line " + std::to_string(stems[i - 1]->line) +
                                    "); kept, its nearest-neighbour distance is 0");
     }
+    // A coppice stool's stems stand within a metre or two of each other (1.25 m at most in the shipped
+    // stands); members far apart are more likely a stool id reused than one stool.
+    constexpr double kStoolSpread = 3;  // m
+    std::map<std::pair<std::string, std::string>, std::vector<const Stem*>> byStool;
+    for (const auto& s : inv.stems)
+        if (s.stool) byStool[{s.plot, *s.stool}].push_back(&s);
+    std::size_t spread = 0;
+    double widest = 0;
+    const Stem *wa = nullptr, *wb = nullptr;
+    for (const auto& [key, members] : byStool) {
+        bool far = false;
+        for (std::size_t i = 0; i < members.size(); ++i)
+            for (std::size_t j = 0; j < i; ++j) {
+                const double d = std::hypot(members[i]->x - members[j]->x, members[i]->y - members[j]->y);
+                far = far || d > kStoolSpread;
+                if (d > widest) widest = d, wa = members[j], wb = members[i];
+            }
+        spread += far ? 1 : 0;
+    }
+    if (spread > 0) {
+        std::ostringstream os;
+        os.precision(3);
+        os << stemsSource << ": " << spread << " stool(s) have stems more than " << kStoolSpread << " m apart, the widest stool '"
+           << *wa->stool << "' of plot '" << wa->plot << "': " << widest << " m between lines " << wa->line << " and " << wb->line
+           << " (a stool's stems stand within a metre or two: is a stool id used twice?); kept as stools";
+        warnings.push_back(os.str());
+    }
     return warnings;
 }
 

@@ -44,6 +44,19 @@ protected:
     std::string err_;
 };
 
+// A stand of one stem gives forests of almost nothing: assessed, with a warning that says so.
+TEST_F(AssessCli, AStandOfFewStemsIsWarnedOf) {
+    std::ofstream(root_ / "ONE_stems.csv") << "plot,stem,x,y,dbh_cm,species,stool\n1,1,10,10,20,beech,\n";
+    std::ofstream(root_ / "ONE_plots.csv") << "plot,xmin,ymin,xmax,ymax\n1,0,0,50,50\n";
+    const std::string args = "--stand " + (root_ / "ONE").string() + " --scene " + std::string(SYLVAROCK_TEST_DATA) +
+                             "/../assess/data/short-scene.ini --runs 2 --realisations 1 --baseline-runs 2 --seed 9 --bootstrap 200 --out " +
+                             (root_ / "out").string();
+    ASSERT_EQ(run(args), 0) << err_;
+    EXPECT_NE(err_.find("stand ONE: warning: its inventory holds 1 stem(s)"), std::string::npos) << err_;
+    ASSERT_EQ(run(smallCampaign("gr1")), 0) << err_;
+    EXPECT_EQ(err_.find("its inventory holds"), std::string::npos) << err_;
+}
+
 TEST_F(AssessCli, SmallCampaignWritesResultsAndReport) {
     ASSERT_EQ(run(smallCampaign("out")), 0) << err_;
     const std::string json = slurp(root_ / "out/results.json");

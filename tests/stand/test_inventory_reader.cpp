@@ -114,6 +114,17 @@ TEST(InventoryReader, IdenticalPositionsAreValidWithAWarning) {
     EXPECT_NE(inv.warnings[1].find("plot '2' has no stem"), std::string::npos) << inv.warnings[1];
 }
 
+// A stool's stems stand within a metre or two; stool '8' of plot 1 spans 13.8 m (lines 5 and 6),
+// likely a stool id used twice: kept, said once with the widest. Stool '7' in plot 2 is another stool.
+TEST(InventoryReader, StoolWhoseStemsStandFarApartIsKeptWithAWarning) {
+    const Inventory inv = readInventory(data("stems_stool_spread.csv"), data("plots_ok.csv"));
+    EXPECT_EQ(inv.stems.size(), 6u);
+    ASSERT_EQ(inv.warnings.size(), 1u);
+    EXPECT_NE(inv.warnings[0].find("1 stool(s) have stems more than 3 m apart, the widest stool '8' of plot '1': 13.8 m between lines 5 and 6"),
+              std::string::npos) << inv.warnings[0];
+    EXPECT_TRUE(readInventory(data("stems_ok.csv"), data("plots_ok.csv")).warnings.empty());
+}
+
 TEST(PointPatternReader, ReadsPointsWithAndWithoutDiameters) {
     const Inventory a = readPointPattern(data("points_ok.csv"), Window::rectangle(0, 0, 10, 10));
     EXPECT_TRUE(a.hasDiameters);

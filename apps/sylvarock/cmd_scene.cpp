@@ -109,16 +109,18 @@ int runScene(int argc, const char* const* argv) {
     if (!vm.count("scene") || !vm.count("out")) throw InputError("--scene and --out are required");
     applyForestOption(vm, sets);
     const std::string out = vm["out"].as<std::string>();
+    const long run = vm["run"].as<long>();
+    if (run < 0) throw InputError("--run must be 0 or more (the run of the campaign whose release is written)");
     const dem::Scene scene(dem::loadScene(vm["scene"].as<std::string>(), sets));
+    // Every input error before the first file: a refused release left the soil and block files written.
+    const dem::Release release = dem::drawRelease(scene, dem::runSeed(vm["seed"].as<Seed>().value, run));
     std::filesystem::create_directories(out);
     scene.soil().writeCsv(out + "/soil_spheres.csv");
     std::ofstream block(out + "/block_spheres.csv");
     block << "x,y,z,r\n";
     for (const auto& s : scene.blockTemplate().spheres())
         block << s.offset.x() << ',' << s.offset.y() << ',' << s.offset.z() << ',' << s.radius << '\n';
-    const long run = vm["run"].as<long>();
-    if (run < 0) throw InputError("--run must be 0 or more (the run of the campaign whose release is written)");
-    writeRelease(out + "/release.csv", scene, dem::drawRelease(scene, dem::runSeed(vm["seed"].as<Seed>().value, run)));
+    writeRelease(out + "/release.csv", scene, release);
     writeSoilContact(out + "/soil_contact.csv", scene);
     const StemCount stems = writeStemsCsv(out + "/stems.csv", scene);
     std::printf("%zu soil spheres, %zu block spheres, %zu stems (%zu stem nodes) written to %s/\n", scene.soil().size(),

@@ -165,6 +165,13 @@ TEST(SceneExportCli, WritesTheReleaseOfTheRunAskedAndTheBlockSoilLaw) {
     EXPECT_EQ(law.at("kn_n_m"), 1e6);
     EXPECT_EQ(law.at("kt_n_m"), 0.05e6);                                       // Eq. 19
     EXPECT_NEAR(law.at("damping_n_s"), 0.54 * 2 * std::sqrt(1e6 * 1350), 1e-3);  // Eqs. 15-16
+    // Refused before any file is written (a release outside the terrain left the soil's and the
+    // block's files behind).
     EXPECT_FALSE(sceneExport(common + "--run -1 --out " + (dir / "bad").string()).status == 0);
+    EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
+    const CliRun outside = sceneExport(common + "--set release.x_m=5000 --out " + (dir / "outside").string());
+    EXPECT_EQ(outside.status, 2) << outside.output;
+    EXPECT_NE(outside.output.find("outside the terrain"), std::string::npos) << outside.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "outside"));
     std::filesystem::remove_all(dir);
 }

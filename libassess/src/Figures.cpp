@@ -54,6 +54,28 @@ std::vector<double> pooledRunout(const StructureAssessment& row) {
 
 std::string cdfFile(const StructureAssessment& row) { return "data/cdf_" + row.name + "_" + structureCode(row.structure) + ".csv"; }
 
+// Fig. 12's axes: the column of data/pf50_*.csv, the label, and the inventory's value it holds.
+struct DendrometryAxis {
+    const char* column;
+    const char* label;
+    double ForestSummary::*value;
+};
+const DendrometryAxis kDendrometry[] = {{"6", "G (m²/ha)", &ForestSummary::basalAreaM2Ha},
+                                        {"7", "Mean D (cm)", &ForestSummary::meanDbhCm},
+                                        {"8", "N (stems/ha)", &ForestSummary::stemsPerHa}};
+
+// The axis's range over the stands: gnuplot's own, unless every stand has the same value (one stand),
+// where gnuplot widens the empty range itself but prints a warning with each figure.
+std::string xRange(const AssessmentResults& results, const DendrometryAxis& axis) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (const auto& row : results.stands) lo = std::min(lo, row.inventory.*axis.value), hi = std::max(hi, row.inventory.*axis.value);
+    if (!(hi == lo)) return "set autoscale x\n";
+    const double pad = lo != 0 ? 0.1 * std::abs(lo) : 1;
+    std::ostringstream os;
+    os << "set xrange [" << lo - pad << ':' << lo + pad << "]\n";
+    return os.str();
+}
+
 std::vector<std::string> standNames(const AssessmentResults& results) {
     std::vector<std::string> names;
     for (const auto& row : results.stands)
@@ -123,12 +145,11 @@ std::string script(const AssessmentResults& results) {
     gp << "# Fig. 12: PF50 against the inventory's basal area, mean diameter and stem density\n"
        << "set terminal svg size 1200,400 dynamic noenhanced font 'sans,11'\nset output 'pf50_dendrometry.svg'\n"
        << "set multiplot layout 1,3 title 'PF50 against the stands'' dendrometry'\nunset title\nset ylabel 'PF50'\n";
-    const char* const axes[][2] = {{"6", "G (m²/ha)"}, {"7", "Mean D (cm)"}, {"8", "N (stems/ha)"}};
-    for (const auto& axis : axes)
-        gp << "set xlabel '" << axis[1] << "'\nplot 'data/pf50_A.csv' every ::1 using " << axis[0]
-           << ":3:4:5 with yerrorbars pt 7 lc rgb A title 'A', \\\n     'data/pf50_NA.csv' every ::1 using " << axis[0]
+    for (const auto& axis : kDendrometry)
+        gp << "set xlabel '" << axis.label << "'\n" << xRange(results, axis) << "plot 'data/pf50_A.csv' every ::1 using " << axis.column
+           << ":3:4:5 with yerrorbars pt 7 lc rgb A title 'A', \\\n     'data/pf50_NA.csv' every ::1 using " << axis.column
            << ":3:4:5 with yerrorbars pt 5 lc rgb NA title 'NA'\n";
-    gp << "unset multiplot\n\n";
+    gp << "unset multiplot\nset autoscale x\n\n";
 
     gp << "# Fig. 8: where the blocks stopped (all stands pooled per structure); the forest starts at the dashed line\n"
        << "set terminal svg size 1000,420 dynamic noenhanced font 'sans,11'\nset output 'stop_map.svg'\nset title 'Stop positions'\n"
@@ -216,14 +237,13 @@ std::string comparisonScript(const std::vector<AssessmentResults>& results) {
        << "set terminal svg size 1300,420 dynamic noenhanced font 'sans,11'\nset output 'pf50_dendrometry_models.svg'\n"
        << "set multiplot layout 1,3 title 'PF50 against the stands'' dendrometry (filled: " << dem::toString(results[0].model)
        << ", open: " << dem::toString(results[1].model) << ")'\nunset title\nset ylabel 'PF50'\nset key top left\n";
-    const char* const axes[][2] = {{"6", "G (m²/ha)"}, {"7", "Mean D (cm)"}, {"8", "N (stems/ha)"}};
-    for (const auto& axis : axes) {
-        gp << "set xlabel '" << axis[1] << "'\nplot ";
+    for (const auto& axis : kDendrometry) {
+        gp << "set xlabel '" << axis.label << "'\n" << xRange(results[0], axis) << "plot ";
         for (std::size_t m = 0; m < results.size(); ++m) {
             const std::string model = dem::toString(results[m].model);
-            gp << (m ? ", \\\n     " : "") << quoted(dir(results[m]) + "data/pf50_A.csv") << " every ::1 using " << axis[0]
+            gp << (m ? ", \\\n     " : "") << quoted(dir(results[m]) + "data/pf50_A.csv") << " every ::1 using " << axis.column
                << ":3 with points pt " << (m ? 6 : 7) << " lc rgb A title " << quoted(model + " A") << ", \\\n     "
-               << quoted(dir(results[m]) + "data/pf50_NA.csv") << " every ::1 using " << axis[0] << ":3 with points pt " << (m ? 4 : 5)
+               << quoted(dir(results[m]) + "data/pf50_NA.csv") << " every ::1 using " << axis.column << ":3 with points pt " << (m ? 4 : 5)
                << " lc rgb NA title " << quoted(model + " NA");
         }
         gp << "\n";

@@ -44,7 +44,8 @@ protected:
     std::string err_;
 };
 
-// A stand of one stem gives forests of almost nothing: assessed, with a warning that says so.
+// A stand of one stem gives forests of almost nothing: assessed, with a warning that says so, and
+// its figures drawn without gnuplot's.
 TEST_F(AssessCli, AStandOfFewStemsIsWarnedOf) {
     std::ofstream(root_ / "ONE_stems.csv") << "plot,stem,x,y,dbh_cm,species,stool\n1,1,10,10,20,beech,\n";
     std::ofstream(root_ / "ONE_plots.csv") << "plot,xmin,ymin,xmax,ymax\n1,0,0,50,50\n";
@@ -53,6 +54,8 @@ TEST_F(AssessCli, AStandOfFewStemsIsWarnedOf) {
                              (root_ / "out").string();
     ASSERT_EQ(run(args), 0) << err_;
     EXPECT_NE(err_.find("stand ONE: warning: its inventory holds 1 stem(s)"), std::string::npos) << err_;
+    // One stand is one value of G, D and N: the figures' range is set, not left to gnuplot to warn about.
+    EXPECT_EQ(err_.find("empty x range"), std::string::npos) << err_;
     ASSERT_EQ(run(smallCampaign("gr1")), 0) << err_;
     EXPECT_EQ(err_.find("its inventory holds"), std::string::npos) << err_;
 }

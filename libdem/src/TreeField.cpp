@@ -22,10 +22,10 @@ TreeField::TreeField(const stand::Forest& forest, const SoilBed& soil, double ti
         }
         // Checked here, with the file's line, rather than when the block first reaches the stem: a
         // forest that cannot be built fails before any run, whatever the seed.
-        if (!(t.dbhCm / 100 > tipDiameter))
+        if (!(t.dbhCm / 100 >= tipDiameter))
             throw InputError(forest.source, t.line,
                              (forest.source.empty() ? "forest: " : "") + std::string("stem ") + std::to_string(t.id) + ": a DBH of " +
-                                 readableNumber(t.dbhCm) + " cm is not above the stems' tip diameter (stem.tip_diameter_m = " +
+                                 readableNumber(t.dbhCm) + " cm is below the stems' tip diameter (stem.tip_diameter_m = " +
                                  readableNumber(tipDiameter * 100) +
                                  " cm), so it cannot be built as a stem: leave such stems out of the forest, or lower stem.tip_diameter_m");
         StemGeometry g;

@@ -17,6 +17,7 @@
 #include "libdem/Campaign.hpp"
 #include "libdem/CampaignSummary.hpp"
 #include "libdem/SimulationError.hpp"
+#include "libdem/Stem.hpp"
 #include "libcommon/InputError.hpp"
 
 using namespace sylva::dem;
@@ -368,7 +369,11 @@ TEST(ExtremeRelease, StemOutsideTheTerrainNamesTheForestFileAndLine) {
 TEST(ExtremeRelease, StemThinnerThanTheTipOrNoStemIsRefusedAtLoad) {
     const std::string path = forestCsv("stem-thin", "5,10,25\n20,10,0.5\n");
     const std::string m = messageOf<sylva::InputError>([&] { Scene(straightSlope(35, {"forest.file=" + path})); });
-    EXPECT_TRUE(mentions(m, path + ":3: stem 2: a DBH of 0.5 cm is not above the stems' tip diameter (stem.tip_diameter_m = 1 cm)")) << m;
+    EXPECT_TRUE(mentions(m, path + ":3: stem 2: a DBH of 0.5 cm is below the stems' tip diameter (stem.tip_diameter_m = 1 cm)")) << m;
+    // A stem as thin as the tip is a cylinder, which Stem builds: accepted, as Stem accepts it.
+    const std::string cylinder = forestCsv("stem-tip", "5,10,25\n20,10,1\n");
+    EXPECT_NO_THROW(Scene(straightSlope(35, {"forest.file=" + cylinder})));
+    EXPECT_NO_THROW(Stem(beechStem(1), StemParams{}, Vec3::Zero(), StemFoot::Clamped));
     // Lowering the tip below it builds the stem.
     EXPECT_NO_THROW(Scene(straightSlope(35, {"forest.file=" + path, "stem.tip_diameter_m=0.004"})));
     // A header and no stem is no forest (it ran as bare ground).

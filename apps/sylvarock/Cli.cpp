@@ -36,10 +36,19 @@ bool parse(int argc, const char* const* argv, const po::options_description& opt
     const po::parsed_options parsed = po::command_line_parser(argc, argv).options(all).run();
     // No command takes words of its own: one here is a value cut off its option ("--runs 2 000")
     // or a typo, and program_options would drop it without a word.
-    for (const po::option& o : parsed.options)
-        if (o.position_key >= 0)
-            throw InputError("'" + o.value.front() + "' belongs to no option (a number is written without spaces, and "
-                             "each option takes one value)");
+    const po::option* previous = nullptr;
+    for (const po::option& o : parsed.options) {
+        if (o.position_key >= 0) {
+            std::string hint = "a number is written without spaces, and each option takes one value";
+            const po::option_description* before =
+                previous && previous->position_key < 0 && !previous->value.empty() ? all.find_nothrow(previous->string_key, false) : nullptr;
+            if (before && before->semantic()->is_composing())  // a repeatable option (--stand, --set)
+                hint += ": for a second value, repeat the option (--" + previous->string_key + " " + previous->value.front() + " --" +
+                        previous->string_key + " " + o.value.front() + ")";
+            throw InputError("'" + o.value.front() + "' belongs to no option (" + hint + ")");
+        }
+        previous = &o;
+    }
     po::store(parsed, vm);
     if (vm.count("help")) {
         std::cout << "usage: " << usage << "\n\n" << all << "\n";

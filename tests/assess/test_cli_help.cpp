@@ -52,4 +52,8 @@ TEST(CliHelp, AStrayWordIsRefusedByEveryCommand) {
         EXPECT_EQ(stray.status, 2) << name << ":\n" << stray.output;
         EXPECT_NE(stray.output.find("'000' belongs to no option"), std::string::npos) << name << ":\n" << stray.output;
     }
+    // Two values after a repeatable option (as a shell's brace expansion gives): repeat the option.
+    const auto two = runCli("assess --stand data/stands/GR1 data/stands/MO1 --out x");
+    EXPECT_EQ(two.status, 2) << two.output;
+    EXPECT_NE(two.output.find("repeat the option (--stand data/stands/GR1 --stand data/stands/MO1)"), std::string::npos) << two.output;
 }

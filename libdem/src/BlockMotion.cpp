@@ -27,6 +27,20 @@ double standingDiameter(const StemGeometry& g, double tip, double height) {
     const double z = std::clamp(height, 0.0, g.height);
     return tip + (g.dbh - tip) * (g.height - z) / (g.height - 1.3);
 }
+
+// K_n holds the block up by overlap: if its weight on one contact would press it deeper than a
+// soil sphere's radius, it sinks through the bed and the contacts' geometry loses its meaning
+// (soil.kn_n_m = 1 was stopped by the energy audit as a step too large, which it is not).
+void refuseSoilTooSoft(const std::string& source, const std::string& key, double kn, double weight, double soilRadius) {
+    const double sag = weight / kn;
+    if (sag <= soilRadius) return;
+    std::ostringstream os;
+    os.precision(3);
+    os << key << " = " << kn << " N/m: the block's weight (" << weight / 1000 << " kN) on one contact would press it " << sag
+       << " m into the soil, more than a soil sphere's radius (" << soilRadius
+       << " m), and no contact could hold it up: K_n is in N/m (Table 2: 1e6)";
+    throw InputError(source, 0, os.str());
+}
 }  // namespace
 
 // A block that starts inside a stem begins with a contact spring that no motion loaded: the
@@ -76,18 +90,13 @@ BlockMotion::BlockMotion(const Scene& scene, const Release& start)
         if (height < 0) os << " (its centre " << -height << " m below the surface)";
         throw InputError(cfg_.sourceFile, 0, os.str() + ": raise release.fall_height_m");
     }
-    // K_n holds the block up by overlap: if its weight on one contact would press it deeper than a
-    // soil sphere's radius, it sinks through the bed and the contacts' geometry loses its meaning
-    // (soil.kn_n_m = 1 was stopped by the energy audit as a step too large, which it is not).
-    const double sag = block_.mass() * cfg_.gravity / cfg_.soilContact.kn;
-    if (sag > soil_.radius()) {
-        std::ostringstream os;
-        os.precision(3);
-        os << "soil.kn_n_m = " << cfg_.soilContact.kn << " N/m: the block's weight (" << block_.mass() * cfg_.gravity / 1000
-           << " kN) on one contact would press it " << sag << " m into the soil, more than a soil sphere's radius ("
-           << soil_.radius() << " m), and no contact could hold it up: K_n is in N/m (Table 2: 1e6)";
-        throw InputError(cfg_.sourceFile, 0, os.str());
-    }
+    // Every soil the block may land on: the scene's, or each type of a soil map (hazard maps).
+    const double weight = block_.mass() * cfg_.gravity;
+    if (const SoilZones* zones = scene.soilZones())
+        for (std::size_t k = 0; k < zones->params.size(); ++k)
+            refuseSoilTooSoft("", "soil type '" + zones->names[k] + "': kn_n_m", zones->params[k].kn, weight, soil_.radius());
+    else
+        refuseSoilTooSoft(cfg_.sourceFile, "soil.kn_n_m", cfg_.soilContact.kn, weight, soil_.radius());
     refuseStartInsideStem(scene);
     anticipatedStiffness_ = cfg_.integration.anticipatedContacts * law_.largestNormalStiffness();
     budget_.initialTotal = block_.kineticEnergy() + block_.mass() * cfg_.gravity * block_.position.z();

@@ -17,6 +17,7 @@
 #include "libdem/Campaign.hpp"
 #include "libdem/CampaignSummary.hpp"
 #include "libdem/SimulationError.hpp"
+#include "libdem/SoilZones.hpp"
 #include "libdem/Stem.hpp"
 #include "libcommon/InputError.hpp"
 
@@ -344,6 +345,17 @@ TEST(ExtremeRelease, ASoilSpringThatCannotHoldTheBlockIsRefusedByName) {
     EXPECT_TRUE(mentions(m, "soil.kn_n_m = 1 N/m") && mentions(m, "more than a soil sphere's radius (0.7 m)")) << m;
     EXPECT_FALSE(mentions(m, "time step")) << m;
     EXPECT_NO_THROW(run(flatGround({"soil.kn_n_m=1e6", "stop.max_time_s=2"})));
+    // So is a soil type of a soil map (hazard's --soil-types), named as its table names it.
+    auto zones = std::make_shared<SoilZones>();
+    zones->zone = {1};  // one cell: the nearest for every point
+    zones->columns = zones->rows = 1;
+    zones->names = {"scene", "mud"};
+    SoilContactParams mud;
+    mud.kn = 1;
+    zones->params = {SoilContactParams{}, mud};
+    const Scene zoned = Scene(flatGround({})).withSoilZones(zones);
+    const std::string z = messageOf<sylva::InputError>([&] { BlockMotion(zoned, drawRelease(zoned, 1)); });
+    EXPECT_TRUE(mentions(z, "soil type 'mud': kn_n_m = 1 N/m")) << z;
 }
 
 TEST(ExtremeRelease, ReleaseOutsideTheTerrainIsRefused) {

@@ -2,22 +2,22 @@
 // Small scenes for the libdem tests: a straight slope written to a temporary profile file.
 #include <cmath>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#include "../WholeFile.hpp"
 #include "libdem/Scene.hpp"
 
 namespace sylva::dem::testing {
 
-// A straight profile falling at `slopeDeg` over `length` m (x from 0), written once per name.
+// A straight profile falling at `slopeDeg` over `length` m (x from 0), at a path fixed by its name.
 inline std::string straightProfile(const std::string& name, double slopeDeg, double length) {
     const auto dir = std::filesystem::temp_directory_path() / "sylvarock-tests";
     std::filesystem::create_directories(dir);
-    const std::string path = (dir / (name + ".csv")).string();
-    std::ofstream out(path);
-    out << "x,z\n0," << length * std::tan(slopeDeg * M_PI / 180) << "\n" << length << ",0\n";
-    return path;
+    std::ostringstream text;
+    text << "x,z\n0," << length * std::tan(slopeDeg * M_PI / 180) << "\n" << length << ",0\n";
+    return sylva::testfiles::writeWholeFile(dir / (name + ".csv"), text.str());
 }
 
 // Scene keys for a straight slope; extra overrides are appended (and win over none here).

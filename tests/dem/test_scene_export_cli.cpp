@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "../CliRun.hpp"
+#include "../WholeFile.hpp"
 
 namespace {
 
@@ -54,12 +55,9 @@ std::filesystem::path exportDir() {
 double surfaceZ(double x) { return 0.6 * (100 - x); }
 
 std::string slopeScene() {
-    const std::string profile = (exportDir() / "slope.csv").string();
-    std::ofstream(profile) << "x,z\n0,60\n100,0\n";
-    const std::string path = (exportDir() / "slope.ini").string();
-    std::ofstream(path) << "[terrain]\nprofile = " << profile << "\nwidth_m = 40\n"
-                        << "[release]\nx_m = 5\ny_min_m = 15\ny_max_m = 25\n";
-    return path;
+    const std::string profile = sylva::testfiles::writeWholeFile(exportDir() / "slope.csv", "x,z\n0,60\n100,0\n");
+    return sylva::testfiles::writeWholeFile(exportDir() / "slope.ini", "[terrain]\nprofile = " + profile +
+                                                                         "\nwidth_m = 40\n[release]\nx_m = 5\ny_min_m = 15\ny_max_m = 25\n");
 }
 
 struct ListedTree {
@@ -69,11 +67,10 @@ struct ListedTree {
 const std::vector<ListedTree> kForest = {{3, 20, 10, 18, 12.0}, {7, 45.5, 22, 30, 17.3}, {9, 70, 31, 41, 20.25}};
 
 std::string forestFile() {
-    const std::string path = (exportDir() / "forest.csv").string();
-    std::ofstream out(path);
+    std::ostringstream out;
     out << "stem,x,y,dbh_cm,height_m\n";
     for (const auto& t : kForest) out << t.id << ',' << t.x << ',' << t.y << ',' << t.dbhCm << ',' << t.heightM << '\n';
-    return path;
+    return sylva::testfiles::writeWholeFile(exportDir() / "forest.csv", out.str());
 }
 
 }  // namespace

@@ -89,7 +89,14 @@ bool StemActivity::blockCanReach(const RigidBody& block, const Stem& s, double g
     return false;
 }
 
-bool StemActivity::mayRest(const RigidBody& block, const Stem& s, double lastOtherContact, double t, double gravity) const {
+bool StemActivity::piecesFalling(const Stem& s, bool broken, double lastBlockContact, double t) const {
+    return broken && t - lastBlockContact < cfg_.pieceMaxTime && fastestNode(s) > cfg_.pieceRestSpeed;
+}
+
+bool StemActivity::mayRest(const RigidBody& block, const Stem& s, bool broken, double lastBlockContact,
+                           double lastOtherContact, double t, double gravity) const {
+    // A falling top is not stopped mid-air, whatever it touches.
+    if (piecesFalling(s, broken, lastBlockContact, t)) return false;
     // A stem just out of a contact with the soil or a neighbour, and still moving, is far from any
     // rest where it stands: stopped, it would be set moving again by that contact (and each such
     // cycle found with energy from nowhere, docs/performance.md).
@@ -102,9 +109,7 @@ std::optional<StemAwake> StemActivity::holds(const RigidBody& block, const Place
     if (t - lastBlockContact < cfg_.sleepAfter) return StemAwake::Waiting;
     const double reach = blockReach(block, kSleepHysteresis);
     if (horizontalDistance(block.position, tree.foot) < reach + baseRadius(tree)) return StemAwake::BlockNear;
-    // A falling top is not frozen mid-air.
-    if (broken && t - lastBlockContact < cfg_.pieceMaxTime && fastestNode(s) > cfg_.pieceRestSpeed)
-        return StemAwake::PiecesFalling;
+    if (piecesFalling(s, broken, lastBlockContact, t)) return StemAwake::PiecesFalling;
     return std::nullopt;
 }
 

@@ -126,11 +126,40 @@ TEST(StemActivity, StemRestsWhereItStandsOnlyFreeOfContactsOrStill) {
     const double g = 9.81;
     const RigidBody gone = ball(Vec3(20, 0, 0.5)), near = ball(Vec3(0.6, 0, 0.5));  // both at rest
     s.velocity.back() = Vec3(2, 0, 0);  // its top swings
-    EXPECT_TRUE(activity.mayRest(gone, s, 0.0, 1.0, g)) << "free of contacts for 1 s";
-    EXPECT_FALSE(activity.mayRest(gone, s, 0.9, 1.0, g)) << "left a contact 0.1 s ago at 2 m/s";
-    EXPECT_FALSE(activity.mayRest(near, s, 0.0, 1.0, g)) << "the block can reach it";
+    const bool whole = false;
+    const double blockLeft = 0.5;  // the block's last contact
+    EXPECT_TRUE(activity.mayRest(gone, s, whole, blockLeft, 0.0, 1.0, g)) << "free of contacts for 1 s";
+    EXPECT_FALSE(activity.mayRest(gone, s, whole, blockLeft, 0.9, 1.0, g)) << "left a contact 0.1 s ago at 2 m/s";
+    EXPECT_FALSE(activity.mayRest(near, s, whole, blockLeft, 0.0, 1.0, g)) << "the block can reach it";
     s.velocity.back() = Vec3(0.1, 0, 0);
-    EXPECT_TRUE(activity.mayRest(gone, s, 1.0, 1.0, g)) << "lying still on what it touches";
+    EXPECT_TRUE(activity.mayRest(gone, s, whole, blockLeft, 1.0, 1.0, g)) << "lying still on what it touches";
+}
+
+// A broken stem's top falling free of everything is not stopped mid-air while the pieces' time
+// (piece_max_time_s after the block's last contact) runs; once it lies still, or that time is over,
+// it may rest as a whole stem does. With no pieces' time (0) it rests as a whole stem.
+TEST(StemActivity, AFallingTopDoesNotRestMidAir) {
+    ForestActivity cfg;
+    cfg.sleepAfter = 0.1;
+    cfg.pieceRestSpeed = 0.2;
+    cfg.pieceMaxTime = 2;
+    cfg.returnHorizon = 0.1;
+    const StemActivity activity(cfg);
+    Stem s = stem20();
+    const double g = 9.81;
+    const RigidBody gone = ball(Vec3(20, 0, 0.5));
+    const bool broken = true;
+    s.velocity.back() = Vec3(0, 0, -3);  // falling, free of contacts for 1 s
+    EXPECT_TRUE(activity.piecesFalling(s, broken, 0.5, 1.0));
+    EXPECT_FALSE(activity.mayRest(gone, s, broken, 0.5, 0.0, 1.0, g)) << "0.5 s after the block left";
+    EXPECT_TRUE(activity.mayRest(gone, s, broken, 0.5, 0.0, 2.6, g)) << "past piece_max_time_s";
+    EXPECT_TRUE(activity.mayRest(gone, s, false, 0.5, 0.0, 1.0, g)) << "a whole stem swinging";
+    s.velocity.back() = Vec3(0, 0, -0.1);
+    EXPECT_TRUE(activity.mayRest(gone, s, broken, 0.5, 1.0, 1.0, g)) << "lying still";
+    ForestActivity noPieces = cfg;
+    noPieces.pieceMaxTime = 0;
+    s.velocity.back() = Vec3(0, 0, -3);
+    EXPECT_TRUE(StemActivity(noPieces).mayRest(gone, s, broken, 0.5, 0.0, 1.0, g));
 }
 
 TEST(StemActivity, DisplacedNodeWakesTheNeighboursItCanTouch) {

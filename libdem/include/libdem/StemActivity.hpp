@@ -48,11 +48,17 @@ public:
     // covers what comes next, and a stem the block is about to touch is held by detectBlockStem's
     // approach (ForestMotion::sleep).
     bool blockCanReach(const RigidBody& block, const Stem& s, double gravity) const;
+    // A broken (or uprooted) stem whose pieces still move (a node faster than piece_rest_speed_m_s)
+    // within piece_max_time_s of the block's last contact: it neither rests nor sleeps, so that a
+    // falling top is not frozen mid-air.
+    bool piecesFalling(const Stem& s, bool broken, double lastBlockContact, double t) const;
     // A moving stem the block has left may stop where it stands (stay awake, no longer stepped):
-    // the block cannot reach it within the horizon, and it has either swung free of the soil and of
-    // other stems for sleep_after_s (`lastOtherContact`) or lies still on them (every node slower
-    // than piece_rest_speed_m_s). The stems it touches are the caller's (an island rests as a whole).
-    bool mayRest(const RigidBody& block, const Stem& s, double lastOtherContact, double t, double gravity) const;
+    // its pieces are not falling, the block cannot reach it within the horizon, and it has either
+    // swung free of the soil and of other stems for sleep_after_s (`lastOtherContact`) or lies still
+    // on them (every node slower than piece_rest_speed_m_s). The stems it touches are the caller's
+    // (an island rests as a whole).
+    bool mayRest(const RigidBody& block, const Stem& s, bool broken, double lastBlockContact, double lastOtherContact,
+                 double t, double gravity) const;
 
 private:
     const ForestActivity& cfg_;

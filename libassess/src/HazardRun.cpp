@@ -27,6 +27,7 @@
 #include "libcommon/InputError.hpp"
 #include "libcommon/SeededRandom.hpp"
 #include "libcommon/ThreadTeam.hpp"
+#include "libdem/BlockMotion.hpp"
 #include "libdem/CampaignSummary.hpp"
 #include "libdem/LumpedRun.hpp"
 #include "libdem/SimulationError.hpp"
@@ -335,18 +336,24 @@ HazardResults runHazard(const HazardOptions& o) {
         results.stands = std::move(stands.polygons);
     }
     if (o.compareBare && forest.trees.empty()) throw InputError("--compare-bare compares with a forest: give --trees or --stands");
-    prepareOutDir(o.outDir, o.resume);
-    const std::string storePath = o.outDir + "/hazard.sqlite";
-    const std::unique_ptr<HazardStore> store =
-        o.resume ? HazardStore::resume(storePath, inputsOf(o, forest)) : HazardStore::create(storePath, inputsOf(o, forest));
-    if (!o.standsPath.empty()) stand::writeForestCsv(o.outDir + "/forest.csv", forest);
-
-    results.releaseCells = static_cast<long>(cells.size());
-    results.trees = static_cast<long>(forest.trees.size());
-    const bool forested = !forest.trees.empty();
     // The ground is the same with and without the trees: both passes on the soil map.
     const auto onSoils = [&soils](dem::Scene s) { return soils ? s.withSoilZones(soils) : s; };
     const dem::Scene scene = onSoils(dem::Scene(config, dtm.elevation, std::move(forest)));
+    const BlockVolumeScenes blocks(scene, o.blockVolumes);
+    // A soil too soft for a block would fail every run of its volume alike: said once, before the
+    // output folder is touched.
+    if (o.model == dem::Model::Dem)
+        for (std::size_t k = 0; k < blocks.classes(); ++k) dem::BlockMotion::refuseSoilTooSoft(blocks.scene(k));
+    prepareOutDir(o.outDir, o.resume);
+    const std::string storePath = o.outDir + "/hazard.sqlite";
+    const stand::Forest& trees = scene.forest();
+    const std::unique_ptr<HazardStore> store =
+        o.resume ? HazardStore::resume(storePath, inputsOf(o, trees)) : HazardStore::create(storePath, inputsOf(o, trees));
+    if (!o.standsPath.empty()) stand::writeForestCsv(o.outDir + "/forest.csv", trees);
+
+    results.releaseCells = static_cast<long>(cells.size());
+    results.trees = static_cast<long>(trees.trees.size());
+    const bool forested = !trees.trees.empty();
     std::optional<CheckLineTally> tally;
     if (!lines.empty()) tally.emplace(lines);
     PassOutputs outputs;
@@ -356,7 +363,7 @@ HazardResults runHazard(const HazardOptions& o) {
     outputs.store = store.get();
     if (o.writeVtk) writeVtkScene(o.outDir + "/vtk", dtm, scene.forest());
     HazardMap map(dtm.grid);
-    results.passes.push_back(runPass(forested ? "forest" : "bare", BlockVolumeScenes(scene, o.blockVolumes), dtm, cells, o, map, outputs));
+    results.passes.push_back(runPass(forested ? "forest" : "bare", blocks, dtm, cells, o, map, outputs));
     results.rasters = writeRasters(o.outDir, map, dtm, forested);
     const FigureSet figure = drawHazardMap(o.outDir, dtm, map.reachProbability(), scene.forest());
     results.figureWarning = figure.warning;

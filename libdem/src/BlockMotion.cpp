@@ -31,7 +31,7 @@ double standingDiameter(const StemGeometry& g, double tip, double height) {
 // K_n holds the block up by overlap: if its weight on one contact would press it deeper than a
 // soil sphere's radius, it sinks through the bed and the contacts' geometry loses its meaning
 // (soil.kn_n_m = 1 was stopped by the energy audit as a step too large, which it is not).
-void refuseSoilTooSoft(const std::string& source, const std::string& key, double kn, double weight, double soilRadius) {
+void refuseSpringTooSoft(const std::string& source, const std::string& key, double kn, double weight, double soilRadius) {
     const double sag = weight / kn;
     if (sag <= soilRadius) return;
     std::ostringstream os;
@@ -42,6 +42,17 @@ void refuseSoilTooSoft(const std::string& source, const std::string& key, double
     throw InputError(source, 0, os.str());
 }
 }  // namespace
+
+// Every soil the block may land on: the scene's, or each type of a soil map (hazard maps).
+void BlockMotion::refuseSoilTooSoft(const Scene& scene) {
+    const SceneConfig& cfg = scene.config();
+    const double weight = scene.blockTemplate().mass() * cfg.gravity, radius = scene.soil().radius();
+    if (const SoilZones* zones = scene.soilZones())
+        for (std::size_t k = 0; k < zones->params.size(); ++k)
+            refuseSpringTooSoft("", "soil type '" + zones->names[k] + "': kn_n_m", zones->params[k].kn, weight, radius);
+    else
+        refuseSpringTooSoft(cfg.sourceFile, "soil.kn_n_m", cfg.soilContact.kn, weight, radius);
+}
 
 // A block that starts inside a stem begins with a contact spring that no motion loaded: the
 // stem's response to it is energy from nowhere (it stopped such runs at the first step, as
@@ -90,13 +101,7 @@ BlockMotion::BlockMotion(const Scene& scene, const Release& start)
         if (height < 0) os << " (its centre " << -height << " m below the surface)";
         throw InputError(cfg_.sourceFile, 0, os.str() + ": raise release.fall_height_m");
     }
-    // Every soil the block may land on: the scene's, or each type of a soil map (hazard maps).
-    const double weight = block_.mass() * cfg_.gravity;
-    if (const SoilZones* zones = scene.soilZones())
-        for (std::size_t k = 0; k < zones->params.size(); ++k)
-            refuseSoilTooSoft("", "soil type '" + zones->names[k] + "': kn_n_m", zones->params[k].kn, weight, soil_.radius());
-    else
-        refuseSoilTooSoft(cfg_.sourceFile, "soil.kn_n_m", cfg_.soilContact.kn, weight, soil_.radius());
+    refuseSoilTooSoft(scene);
     refuseStartInsideStem(scene);
     anticipatedStiffness_ = cfg_.integration.anticipatedContacts * law_.largestNormalStiffness();
     budget_.initialTotal = block_.kineticEnergy() + block_.mass() * cfg_.gravity * block_.position.z();

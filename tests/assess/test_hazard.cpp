@@ -629,6 +629,45 @@ TEST_F(Hazard, DeadSoilStopsTheDemsBlocksSooner) {
     EXPECT_NE(errorOf([&] { runHazard(o); }).find("--soils needs --soil-types"), std::string::npos);
 }
 
+// A soil too soft to hold the block up fails every run alike: the map says so once, as an input error
+// before the first run, naming the key (it used to let each of the 48 runs fail, then stop without a
+// map, and a store in the folder that the corrected command then refused). The soil map's types and
+// each block volume are asked: a 4 m^3 block (2 700 kg/m^3: 10.8 t, 106 kN) would sink 0.53 m into
+// a 2e5 N/m soil, under the 0.7 m spheres' radius, which holds it, and 1.06 m into a 1e5 N/m one.
+TEST_F(Hazard, ASoilTooSoftForTheBlockIsRefusedBeforeAnyRun) {
+    HazardOptions o;
+    o.dtmPath = std::string(SYLVAROCK_DATA) + "/hazard/slope.tif";
+    o.releasePath = std::string(SYLVAROCK_DATA) + "/hazard/release.geojson";
+    o.runsPerCell = 1;
+    o.seed = 1;
+    int notes = 0;
+    o.onNote = [&](const std::string&) { ++notes; };
+    const auto refusal = [&](const std::string& out) {
+        o.outDir = (dir_ / out).string();
+        try {
+            runHazard(o);
+        } catch (const sylva::InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("(no input error)");
+    };
+    o.sceneOverrides = {"soil.kn_n_m=1"};
+    const std::string scene = refusal("scene");
+    EXPECT_NE(scene.find("soil.kn_n_m = 1 N/m"), std::string::npos) << scene;
+    EXPECT_EQ(notes, 0) << "no run was tried";
+    EXPECT_FALSE(std::filesystem::exists(dir_ / "scene")) << "the output folder is not touched: a rerun may use it";
+    o.sceneOverrides.clear();
+    o.soilTypesPath = write("soft.csv", "name,code,damping_ratio,kn_n_m,friction_deg\nsoft,1,0.5,1e5,30\n");
+    o.soilMapPath = write("soft.geojson", R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {"soil": "soft"},
+        "geometry": {"type": "Polygon", "coordinates": [[[924000, 6459000], [926000, 6459000], [926000, 6461000], [924000, 6461000], [924000, 6459000]]]}}]})");
+    o.blockVolumes = parseBlockVolumes("0.5,4");
+    const std::string heavy = refusal("heavy");
+    EXPECT_NE(heavy.find("soil type 'soft': kn_n_m = 1e+05 N/m"), std::string::npos) << heavy;
+    EXPECT_EQ(notes, 0);
+    o.soilTypesPath = write("firm.csv", "name,code,damping_ratio,kn_n_m,friction_deg\nsoft,1,0.5,2e5,30\n");
+    EXPECT_EQ(refusal("firm"), "(no input error)");
+}
+
 // Stand polygons on a flat 300 x 200 m DTM (cell centres from 2.5 to 297.5 and 2.5 to 197.5).
 class StandPolygons : public Hazard {
 protected:

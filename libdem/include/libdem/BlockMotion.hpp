@@ -15,8 +15,13 @@ namespace sylva::dem {
 
 class BlockMotion {
 public:
-    // Throws InputError if the block starts inside the soil (or below its surface) or inside a stem.
+    // Throws InputError if the block starts inside the soil (or below its surface) or inside a stem,
+    // or on a soil too soft to hold it (refuseSoilTooSoft).
     BlockMotion(const Scene& scene, const Release& start);
+    // Throws InputError, naming the key, if the scene's soil (or a type of its soil map) is too soft
+    // to hold the scene's block up: its weight on one contact would press it deeper than a soil
+    // sphere's radius. Campaigns that go on past a run's bad release (hazard) ask it once, first.
+    static void refuseSoilTooSoft(const Scene& scene);
 
     // Advances by one stable step (or the forced one) and returns it. Throws SimulationError on
     // NaN, on a forced step above the stable limit, or when energy grows without a source.

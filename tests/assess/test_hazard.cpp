@@ -73,6 +73,22 @@ protected:
         o.compareBare = true;
         return o;
     }
+    // The example's slope and release (data/hazard/), the DEM, one block a cell.
+    static HazardOptions exampleSlope() {
+        HazardOptions o;
+        o.dtmPath = std::string(SYLVAROCK_DATA) + "/hazard/slope.tif";
+        o.releasePath = std::string(SYLVAROCK_DATA) + "/hazard/release.geojson";
+        o.runsPerCell = 1;
+        o.seed = 1;
+        return o;
+    }
+    // On it, the whole example under one soil type: its table row `type` (the CSV's columns below).
+    void oneSoilType(HazardOptions& o, const std::string& type) const {
+        o.soilTypesPath = write("soil-types.csv", "name,code,damping_ratio,kn_n_m,friction_deg\n" + type + "\n");
+        const std::string name = type.substr(0, type.find(','));
+        o.soilMapPath = write("soils.geojson", R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {"soil": ")" + name + R"("},
+        "geometry": {"type": "Polygon", "coordinates": [[[924000, 6459000], [926000, 6459000], [926000, 6461000], [924000, 6461000], [924000, 6459000]]]}}]})");
+    }
     // The same slope without trees, one pass, blocks drawn from `volumes` (parseBlockVolumes).
     HazardOptions bareSlopeWithVolumes(int runsPerCell, const std::string& volumes, const std::string& out) const {
         HazardOptions o = smallSlope();
@@ -605,16 +621,10 @@ TEST_F(Hazard, SoilMapPlacesTheTypesOnTheDtmsCells) {
 // than on the scene's (Table 2: 0.54, 1e6 N/m, 30 degrees): every soil contact loses more. With 2
 // blocks per cell the medians were 379 and 333 m, the 90th percentiles 466 and 343 m; here 1 per cell.
 TEST_F(Hazard, DeadSoilStopsTheDemsBlocksSooner) {
-    HazardOptions o;
-    o.dtmPath = std::string(SYLVAROCK_DATA) + "/hazard/slope.tif";
-    o.releasePath = std::string(SYLVAROCK_DATA) + "/hazard/release.geojson";
-    o.runsPerCell = 1;
-    o.seed = 1;
+    HazardOptions o = exampleSlope();
     o.outDir = (dir_ / "scene").string();
     const HazardResults plain = runHazard(o);
-    o.soilTypesPath = write("soils.csv", "name,code,damping_ratio,kn_n_m,friction_deg\ndead,1,0.95,2e5,45\n");
-    o.soilMapPath = write("soils.geojson", R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {"soil": "dead"},
-        "geometry": {"type": "Polygon", "coordinates": [[[924000, 6459000], [926000, 6459000], [926000, 6461000], [924000, 6461000], [924000, 6459000]]]}}]})");
+    oneSoilType(o, "dead,1,0.95,2e5,45");
     o.outDir = (dir_ / "dead").string();
     const HazardResults dead = runHazard(o);
     ASSERT_EQ(plain.passes.at(0).blocks, 48);
@@ -635,11 +645,7 @@ TEST_F(Hazard, DeadSoilStopsTheDemsBlocksSooner) {
 // each block volume are asked: a 4 m^3 block (2 700 kg/m^3: 10.8 t, 106 kN) would sink 0.53 m into
 // a 2e5 N/m soil, under the 0.7 m spheres' radius, which holds it, and 1.06 m into a 1e5 N/m one.
 TEST_F(Hazard, ASoilTooSoftForTheBlockIsRefusedBeforeAnyRun) {
-    HazardOptions o;
-    o.dtmPath = std::string(SYLVAROCK_DATA) + "/hazard/slope.tif";
-    o.releasePath = std::string(SYLVAROCK_DATA) + "/hazard/release.geojson";
-    o.runsPerCell = 1;
-    o.seed = 1;
+    HazardOptions o = exampleSlope();
     int notes = 0;
     o.onNote = [&](const std::string&) { ++notes; };
     const auto refusal = [&](const std::string& out) {
@@ -657,14 +663,12 @@ TEST_F(Hazard, ASoilTooSoftForTheBlockIsRefusedBeforeAnyRun) {
     EXPECT_EQ(notes, 0) << "no run was tried";
     EXPECT_FALSE(std::filesystem::exists(dir_ / "scene")) << "the output folder is not touched: a rerun may use it";
     o.sceneOverrides.clear();
-    o.soilTypesPath = write("soft.csv", "name,code,damping_ratio,kn_n_m,friction_deg\nsoft,1,0.5,1e5,30\n");
-    o.soilMapPath = write("soft.geojson", R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {"soil": "soft"},
-        "geometry": {"type": "Polygon", "coordinates": [[[924000, 6459000], [926000, 6459000], [926000, 6461000], [924000, 6461000], [924000, 6459000]]]}}]})");
+    oneSoilType(o, "soft,1,0.5,1e5,30");
     o.blockVolumes = parseBlockVolumes("0.5,4");
     const std::string heavy = refusal("heavy");
     EXPECT_NE(heavy.find("soil type 'soft': kn_n_m = 1e+05 N/m"), std::string::npos) << heavy;
     EXPECT_EQ(notes, 0);
-    o.soilTypesPath = write("firm.csv", "name,code,damping_ratio,kn_n_m,friction_deg\nsoft,1,0.5,2e5,30\n");
+    oneSoilType(o, "soft,1,0.5,2e5,30");
     EXPECT_EQ(refusal("firm"), "(no input error)");
 }
 

@@ -18,6 +18,16 @@ Stem stem20() {
     return Stem(t.geometry, StemParams{}, t.foot, t.support);
 }
 
+// Resting and sleeping as the tests below ask them: a stem waits 0.3 s after the block, lies still
+// below 0.2 m/s, and the block is looked ahead 0.1 s.
+ForestActivity restingRules() {
+    ForestActivity cfg;
+    cfg.sleepAfter = 0.3;
+    cfg.pieceRestSpeed = 0.2;
+    cfg.returnHorizon = 0.1;
+    return cfg;
+}
+
 // A single sphere of 0.5 m radius: its bounding radius is 0.5 m.
 RigidBody ball(const Vec3& at) {
     RigidBody b(1000, Vec3(100, 100, 100), {ClumpSphere{Vec3::Zero(), 0.5}});
@@ -47,9 +57,7 @@ TEST(StemActivity, BlockWakesWhatItCanReachBeforeTheNextCheckAndNothingItFliesOv
 }
 
 TEST(StemActivity, StemSleepsOnlyOnceTheBlockHasGoneAndItsPiecesRest) {
-    ForestActivity cfg;
-    cfg.sleepAfter = 0.3;
-    cfg.pieceRestSpeed = 0.2;
+    ForestActivity cfg = restingRules();
     cfg.pieceMaxTime = 10;
     const StemActivity activity(cfg);
     const PlacedTree t = tree20();
@@ -117,10 +125,7 @@ TEST(StemActivity, BlockCanReachAStemItHeadsForWithinTheHorizon) {
 // sleep_after_s, whatever its speed, or lies still on what it touches; not if it has just left a
 // contact at speed (stopped there, the contact would set it moving again and again).
 TEST(StemActivity, StemRestsWhereItStandsOnlyFreeOfContactsOrStill) {
-    ForestActivity cfg;
-    cfg.sleepAfter = 0.3;
-    cfg.pieceRestSpeed = 0.2;
-    cfg.returnHorizon = 0.1;
+    const ForestActivity cfg = restingRules();
     const StemActivity activity(cfg);
     Stem s = stem20();
     const double g = 9.81;
@@ -139,11 +144,8 @@ TEST(StemActivity, StemRestsWhereItStandsOnlyFreeOfContactsOrStill) {
 // (piece_max_time_s after the block's last contact) runs; once it lies still, or that time is over,
 // it may rest as a whole stem does. With no pieces' time (0) it rests as a whole stem.
 TEST(StemActivity, AFallingTopDoesNotRestMidAir) {
-    ForestActivity cfg;
-    cfg.sleepAfter = 0.1;
-    cfg.pieceRestSpeed = 0.2;
+    ForestActivity cfg = restingRules();
     cfg.pieceMaxTime = 2;
-    cfg.returnHorizon = 0.1;
     const StemActivity activity(cfg);
     Stem s = stem20();
     const double g = 9.81;

@@ -63,23 +63,16 @@ double circleFractionInside(const Window& window, const Eigen::Vector2d& c, doub
     }
     if (angles.empty()) return window.contains(c + Vec(r, 0)) ? 1.0 : 0.0;
     std::sort(angles.begin(), angles.end());
-    const auto arcInside = [&](std::size_t k) {
-        const double from = angles[k], to = k + 1 < angles.size() ? angles[k + 1] : angles.front() + 2 * M_PI;
-        const double mid = 0.5 * (from + to);
-        return window.contains(c + r * Vec(std::cos(mid), std::sin(mid)));
-    };
-    // Each crossing of the boundary turns the circle from inside to outside or back, so one point test
-    // classifies every arc (a test costs the window's n edges: k arcs would cost k n). An odd count
-    // means the circle met a vertex or touched an edge (a root counted twice or once too often): then
-    // every arc is tested.
-    const bool alternate = angles.size() % 2 == 0;
-    bool in = arcInside(0);
+    // Each arc between neighbouring crossings is classified by its own midpoint. Telling them by
+    // alternation (one test, then in and out at each crossing) goes wrong where the circle only
+    // touches an edge or passes through a vertex without crossing: ties that survey coordinates in
+    // whole metres produce. An arc of (almost) no length adds (almost) nothing, whichever way its
+    // midpoint falls.
     double inside = 0;
     for (std::size_t k = 0; k < angles.size(); ++k) {
         const double from = angles[k], to = k + 1 < angles.size() ? angles[k + 1] : angles.front() + 2 * M_PI;
-        if (!alternate && k > 0) in = arcInside(k);
-        if (in) inside += to - from;
-        in = !in;
+        const double mid = 0.5 * (from + to);
+        if (window.contains(c + r * Vec(std::cos(mid), std::sin(mid)))) inside += to - from;
     }
     return inside / (2 * M_PI);
 }

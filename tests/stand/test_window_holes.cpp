@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <iostream>
+#include <utility>
+#include <vector>
 
 #include "libstand/ClarkEvans.hpp"
 #include "libstand/EdgeCorrection.hpp"
@@ -73,6 +75,26 @@ TEST(WindowWithHoles, CircleAroundAHoleLosesTheArcInside) {
     EXPECT_NEAR(circleFractionInside(w, {2, 5}, 2.5), 1 - outside / (2 * M_PI), 1e-12);
     // A circle enclosing the hole, not touching the outer ring, loses nothing.
     EXPECT_DOUBLE_EQ(circleFractionInside(w, {5, 3.5}, 3), 1.0);
+}
+
+// Circles that touch an edge or pass through a vertex without crossing the boundary: the polygon's
+// arcs must agree with the rectangle's formula (spatstat's ripleybox), an independent computation, on
+// the same square. Such ties come with coordinates in whole metres. Tolerance: both are exact up to
+// rounding in atan2 and acos.
+TEST(WindowWithHoles, CirclesTouchingEdgesOrThroughVerticesKeepTheirArcs) {
+    const Window square = Window::rectangle(0, 0, 20, 20);
+    const Window polygon = Window::polygon({Vec(0, 0), Vec(20, 0), Vec(20, 20), Vec(0, 20)});
+    ASSERT_FALSE(polygon.isRectangle());
+    // Tangent to y = 0, crossing x = 20 at 3 m from the centre: the arc beyond it, 2 acos(3/5), is lost.
+    EXPECT_NEAR(circleFractionInside(polygon, {17, 5}, 5), 1 - 2 * std::acos(0.6) / (2 * M_PI), 1e-12);
+    // Through the corners (0, 0) and (20, 0), crossing the sides at y = 4: inside only the arc over the
+    // top, between the directions atan2(2, +-10).
+    EXPECT_NEAR(circleFractionInside(polygon, {10, 2}, std::sqrt(104.0)), (M_PI - 2 * std::atan2(2, 10)) / (2 * M_PI), 1e-12);
+    // Tangent to all four sides from inside: all of it.
+    EXPECT_NEAR(circleFractionInside(polygon, {10, 10}, 10), 1.0, 1e-12);
+    for (const auto& [c, r] : std::vector<std::pair<Vec, double>>{{{17, 5}, 5}, {{10, 2}, std::sqrt(104.0)}, {{10, 10}, 10},
+                                                                   {{3, 4}, 5}, {{5, 5}, std::sqrt(50.0)}, {{15, 15}, 5}})
+        EXPECT_NEAR(circleFractionInside(polygon, c, r), circleFractionInside(square, c, r), 1e-12) << c.transpose() << " r " << r;
 }
 
 TEST(WindowWithHoles, BadHolesAreInputErrorsNamingTheHole) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <utility>
 
 #include "libcommon/InputError.hpp"
 
@@ -11,8 +12,9 @@ StandCatalogue::StandCatalogue(const Inventory& inventory, const std::string& st
     if (inventory.stems.empty()) throw InputError(stemsSource, 0, "the inventory has no stem: nothing to resample");
 
     // std::map keeps the stools in id order, so the catalogue (and every forest drawn from it)
-    // does not depend on hash-table order.
-    std::map<std::string, std::vector<const Stem*>> stemsOfStool;
+    // does not depend on hash-table order. A stool is its id within its plot: inventories often
+    // number the stools of each plot from 1.
+    std::map<std::pair<std::string, std::string>, std::vector<const Stem*>> stemsOfStool;
     for (const Stem& s : inventory.stems) {
         // Virtual forests are made of the stems a block meets: a stem below breast height is left
         // out (the inventory's warnings count them); one whose DBH was not measured cannot be drawn.
@@ -28,13 +30,7 @@ StandCatalogue::StandCatalogue(const Inventory& inventory, const std::string& st
             singles_.push_back(t);
             continue;
         }
-        auto& members = stemsOfStool[*s.stool];
-        if (!members.empty() && members.front()->plot != s.plot)
-            throw InputError(stemsSource, s.line,
-                             "stool '" + *s.stool + "' is in plot '" + s.plot + "' but its stem on line " +
-                                 std::to_string(members.front()->line) + " is in plot '" + members.front()->plot +
-                                 "' (a stool's stems must share one plot)");
-        members.push_back(&s);
+        stemsOfStool[{s.plot, *s.stool}].push_back(&s);
     }
 
     for (const auto& [id, members] : stemsOfStool) {

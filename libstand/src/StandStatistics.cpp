@@ -3,6 +3,7 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <utility>
 
 namespace sylva::stand {
 namespace {
@@ -30,11 +31,11 @@ DendrometricStatistics dendrometrics(const std::vector<const Stem*>& stems, doub
             s.sdDbhCm = std::sqrt(ss / (count - 1));
         }
     }
-    std::set<std::string> stools;
+    std::set<std::pair<std::string, std::string>> stools;  // a stool is its id within its plot
     std::size_t inStools = 0;
     for (const Stem* t : stems)
         if (t->stool) {
-            stools.insert(*t->stool);
+            stools.insert({t->plot, *t->stool});
             ++inStools;
         }
     s.nStools = stools.size();

@@ -117,18 +117,18 @@ TEST(StandCatalogue, DensitiesSharesAndStoolGeometry) {
     EXPECT_DOUBLE_EQ(a.stems[1].dbhCm, 12.0);
 }
 
-TEST(StandCatalogue, RejectsAStoolSpreadOverTwoPlots) {
+// Inventories often number each plot's stools from 1: the same id in two plots names two stools,
+// each with its own centroid in its own plot's frame (it was refused, while `stats` merged them).
+TEST(StandCatalogue, AStoolIdInTwoPlotsNamesTwoStools) {
     Inventory inv = smallStand();
     inv.plots.push_back({"2", Window::rectangle(0, 0, 20, 20)});
-    inv.stems[4].plot = "2";  // stem 5 (line 6) of stool "b"
-    try {
-        StandCatalogue(inv, "small_stems.csv");
-        FAIL() << "accepted";
-    } catch (const sylva::InputError& e) {
-        EXPECT_EQ(e.file(), "small_stems.csv");
-        EXPECT_EQ(e.line(), 6);
-        EXPECT_NE(std::string(e.what()).find("stool 'b'"), std::string::npos) << e.what();
-    }
+    // Stool "b" of plot 2, 13 m from plot 1's "b" in plot 1's frame.
+    inv.stems.push_back(stem("11", 2.0, 2.0, 14, "b", "2"));
+    inv.stems.push_back(stem("12", 2.5, 2.0, 14, "b", "2"));
+    const StandCatalogue c(inv, "small_stems.csv");
+    ASSERT_EQ(c.stools().size(), 3u);
+    for (const StoolTemplate& t : c.stools()) EXPECT_LT((t.offsets.front() - t.offsets.back()).norm(), 1.0);
+    EXPECT_DOUBLE_EQ(c.stoolsPerHa(), 3 / 0.08);
 }
 
 TEST(StandCatalogue, RejectsAnInventoryWithoutStems) {

@@ -78,6 +78,23 @@ TEST(StandStatistics, SmallInventoryByHand) {
     EXPECT_DOUBLE_EQ(*s.stand.clarkEvans.naive, *p1.clarkEvans.naive);
 }
 
+// A stool id used in two plots names two stools (the plots' own numbering), not one of four stems.
+TEST(StandStatistics, AStoolIdInTwoPlotsNamesTwoStools) {
+    Inventory inv = readInventory(data("stems_ok.csv"), data("plots_ok.csv"));
+    for (const double x : {2.0, 2.5}) {
+        Stem s = inv.stems.front();  // of stool "7" in plot 1
+        s.id = "p2-" + std::to_string(x);
+        s.plot = "2";
+        s.x = x;
+        s.y = 2;
+        inv.stems.push_back(s);
+    }
+    const StandStatistics s = standStatistics(inv);
+    EXPECT_EQ(s.stand.nStools, 2u);
+    EXPECT_DOUBLE_EQ(*s.stand.stemsPerStool, 2);
+    EXPECT_EQ(s.plots[1].stats.nStools, 1u);
+}
+
 TEST(StandStatistics, EmptyPlotLowersNAndG) {
     const StandStatistics with = standStatistics(readInventory(data("stems_ok.csv"), data("plots_with_empty_plot.csv")));
     const StandStatistics without = standStatistics(readInventory(data("stems_ok.csv"), data("plots_ok.csv")));

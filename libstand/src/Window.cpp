@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <sstream>
 
+#include <Eigen/Geometry>
+
 #include "libcommon/InputError.hpp"
 
 namespace sylva::stand {
@@ -72,11 +74,19 @@ void Window::requirePlotSize() const {
 
 namespace {
 
-// Tolerance of the orientation tests for vertices of this size.
+// Tolerance of the orientation tests for these vertices. The cross product of two edge vectors of
+// length up to the rings' extent L carries the rounding of their differences, each off by up to
+// eps |x| for coordinates of size |x|: of order L |x| eps. Scaled by |x|^2 instead, the tolerance in
+// projected coordinates (|x| ~ 5e6 m) reached 25 m^2 and a 4 m square plot read as degenerate.
 double orientationTolerance(const std::vector<Vec>& v) {
     double scale = 0;
-    for (const auto& p : v) scale = std::max(scale, p.cwiseAbs().maxCoeff());
-    return 1e-12 * std::max(1.0, scale * scale);
+    Eigen::AlignedBox2d box;
+    for (const auto& p : v) {
+        scale = std::max(scale, p.cwiseAbs().maxCoeff());
+        box.extend(p);
+    }
+    const double extent = box.sizes().maxCoeff();
+    return 1e-12 * std::max(1.0, extent * std::max(extent, scale));
 }
 
 // A ring as a simple polygon, counter-clockwise, without its closing vertex or repeated vertices.

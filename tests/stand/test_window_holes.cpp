@@ -97,6 +97,20 @@ TEST(WindowWithHoles, CirclesTouchingEdgesOrThroughVerticesKeepTheirArcs) {
         EXPECT_NEAR(circleFractionInside(polygon, c, r), circleFractionInside(square, c, r), 1e-12) << c.transpose() << " r " << r;
 }
 
+// Plots in projected coordinates (UTM: x ~ 6e5, y ~ 5e6 m) are checked as the same plots in a local
+// frame: the validity tests' tolerance follows the rings' extent, not the coordinates' size alone.
+TEST(WindowWithHoles, PlotsInProjectedCoordinatesAreCheckedAsLocalOnes) {
+    const Vec o(600000, 5100000);
+    const auto square = [&](double x, double y, double side) {
+        return std::vector<Vec>{o + Vec(x, y), o + Vec(x + side, y), o + Vec(x + side, y + side), o + Vec(x, y + side)};
+    };
+    EXPECT_NEAR(Window::polygon(square(0, 0, 4)).area(), 16, 1e-6);
+    EXPECT_NEAR(Window::polygon(square(0, 0, 50), {square(20, 20, 3)}).area(), 2500 - 9, 1e-6);
+    // Still refused there: a ring on one line, and a hole touching the outer ring.
+    EXPECT_THROW(Window::polygon({o, o + Vec(10, 10), o + Vec(20, 20)}), sylva::InputError);
+    EXPECT_THROW(Window::polygon(square(0, 0, 50), {square(0, 20, 3)}), sylva::InputError);
+}
+
 TEST(WindowWithHoles, BadHolesAreInputErrorsNamingTheHole) {
     EXPECT_NE(errorOf("POLYGON((0 0, 10 0, 10 10, 0 10), (8 8, 12 8, 12 12, 8 12))").find("hole 1 of the polygon window is "
                                                                                         "not strictly inside"),

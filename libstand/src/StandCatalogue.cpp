@@ -12,8 +12,9 @@ StandCatalogue::StandCatalogue(const Inventory& inventory, const std::string& st
     if (inventory.stems.empty()) throw InputError(stemsSource, 0, "the inventory has no stem: nothing to resample");
 
     // std::map keeps the stools in id order, so the catalogue (and every forest drawn from it)
-    // does not depend on hash-table order. A stool is its id within its plot: inventories often
-    // number the stools of each plot from 1.
+    // does not depend on hash-table order. A stool is its id within its plot (inventories often
+    // number the stools of each plot from 1); keyed by id first, the order of stools with ids unique
+    // in the stand, and so every forest of a seed, is the one keyed by id alone gave.
     std::map<std::pair<std::string, std::string>, std::vector<const Stem*>> stemsOfStool;
     for (const Stem& s : inventory.stems) {
         // Virtual forests are made of the stems a block meets: a stem below breast height is left
@@ -30,7 +31,7 @@ StandCatalogue::StandCatalogue(const Inventory& inventory, const std::string& st
             singles_.push_back(t);
             continue;
         }
-        stemsOfStool[{s.plot, *s.stool}].push_back(&s);
+        stemsOfStool[{*s.stool, s.plot}].push_back(&s);
     }
 
     for (const auto& [id, members] : stemsOfStool) {

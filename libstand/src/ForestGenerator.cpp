@@ -38,12 +38,13 @@ Vec roundToMillimetre(const Vec& p) { return Vec(std::round(p.x() * 1e3) / 1e3, 
 // keeping the clearance to every stem already placed, and records them as trees.
 class ForestBuilder {
 public:
-    ForestBuilder(const StandCatalogue& stand, const Window& extent, const GenerationSettings& settings, gsl_rng* rng)
+    ForestBuilder(const StandCatalogue& stand, const Window& extent, const GenerationSettings& settings, gsl_rng* rng,
+                  std::size_t stems)
         : stand_(stand),
           extent_(extent),
           settings_(settings),
           rng_(rng),
-          grid_(extent.lower(), extent.upper(), stand.maxDbhCm() / 200.0, settings.clearanceM) {}
+          grid_(extent.lower(), extent.upper(), stand.maxDbhCm() / 200.0, settings.clearanceM, stems) {}
 
     void placeSingle(const StemTemplate& stem) {
         const double radius = stem.dbhCm / 200.0;
@@ -147,7 +148,7 @@ GeneratedForest generateForest(const StandCatalogue& stand, const Window& extent
         throw InputError(what.str());
     }
     const auto stems = static_cast<std::size_t>(std::llround(expected));
-    ForestBuilder builder(stand, extent, settings, rng);
+    ForestBuilder builder(stand, extent, settings, rng, stems);
     if (stems == 0) builder.warn("the extent is too small for a single stem at " + std::to_string(stand.stemsPerHa()) + " stems/ha");
 
     ForestStructure structure = settings.structure;

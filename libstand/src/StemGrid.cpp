@@ -5,8 +5,16 @@
 
 namespace sylva::stand {
 
-StemGrid::StemGrid(const Eigen::Vector2d& lower, const Eigen::Vector2d& upper, double maxRadiusM, double clearanceM)
-    : lower_(lower), cellSide_(2 * maxRadiusM + clearanceM), clearance_(clearanceM) {
+namespace {
+constexpr double kCellsPerStem = 2;  // at most, on average: a few stems in the 3x3 cells a test reads
+}  // namespace
+
+StemGrid::StemGrid(const Eigen::Vector2d& lower, const Eigen::Vector2d& upper, double maxRadiusM, double clearanceM,
+                   std::size_t expectedStems)
+    : lower_(lower), clearance_(clearanceM) {
+    const Eigen::Vector2d size = upper - lower;
+    const double cells = kCellsPerStem * static_cast<double>(std::max<std::size_t>(1, expectedStems));
+    cellSide_ = std::max(2 * maxRadiusM + clearanceM, std::sqrt(size.x() * size.y() / cells));
     nx_ = std::max(1L, static_cast<long>(std::ceil((upper.x() - lower.x()) / cellSide_)));
     ny_ = std::max(1L, static_cast<long>(std::ceil((upper.y() - lower.y()) / cellSide_)));
     head_.assign(static_cast<std::size_t>(nx_ * ny_), -1);

@@ -238,6 +238,19 @@ TEST(ForestGenerator, AnExtentTooLargeForAnyForestIsRefusedAtOnce) {
     }
 }
 
+// A sparse stand over a large extent: its placement grid once had a cell per exclusion distance
+// (0.61 m here), 2.7e11 cells for 204 800 stems, and the generator died of std::bad_alloc. The cells
+// now follow the stems' number.
+TEST(ForestGenerator, ASparseStandOverALargeExtentIsPlaced) {
+    Inventory inv;
+    inv.name = "sparse";
+    inv.plots.push_back({"1", Window::rectangle(0, 0, 1000, 1000)});  // 100 ha, 2 stems: 0.02 stems/ha
+    inv.stems = {stem("1", 100, 100, 60), stem("2", 700, 400, 20)};
+    const StandCatalogue c(inv, "sparse.csv");
+    const GeneratedForest g = generateForest(c, Window::rectangle(0, 0, 3.2e5, 3.2e5), settingsFor(ForestStructure::Random, 2));
+    EXPECT_EQ(g.forest.trees.size(), 204800u);  // 0.02 stems/ha x 1.024e7 ha
+}
+
 TEST(ForestGenerator, TrimsTheLastStoolSoThatNIsExact) {
     // 20 m x 22 m = 0.044 ha: N = 250 * 0.044 = 11 stems, of which round(5.5) = 6 in stools. Whole
     // stools have 3 or 2 stems, so the last one is cut (to 1 stem: then it is a single tree).

@@ -15,6 +15,9 @@ void ImpactRecorder::touch(const RigidBody& block, std::uint32_t tree, const Pla
                            const Vec3& point, double t, const Stem& stem) {
     auto open = openOf_.find(tree);
     if (open == openOf_.end()) {
+        // A piece broken off the stem is debris, not an impact: it opens none, also when it meets
+        // the block after its stem slept and was woken again (the impact closed then).
+        if (piece != 0) return;
         TreeImpact r;
         r.tree = placed.id;
         r.time = t;

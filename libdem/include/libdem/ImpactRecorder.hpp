@@ -23,7 +23,7 @@ public:
     // Before the step's block/stem contacts are reported.
     void beginStep();
     // The block touches tree `tree` at `point` at time t; piece 0 is the standing stem, others are
-    // pieces broken off it.
+    // pieces broken off it. Only the standing stem opens an impact or starts a contact of one.
     void touch(const RigidBody& block, std::uint32_t tree, const PlacedTree& placed, std::uint32_t piece, const Vec3& point,
                double t, const Stem& stem);
     // After the step's contacts: the impacts whose contact ended take the block's state as "after".

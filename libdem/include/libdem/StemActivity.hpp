@@ -34,11 +34,12 @@ public:
     static bool nodeReaches(const Vec3& node, double reach, const PlacedTree& other);
 
     // What keeps a stem the block touched last at `lastBlockContact` from going back to sleep at t
-    // (Waiting: not `sleepAfter` yet; BlockNear: the block within reach of its foot;
-    // PiecesFalling: broken, a piece still moving within `pieceMaxTime`), or nullopt: it may sleep.
-    // The stems it touches are the caller's to check (an island sleeps as a whole: ForestMotion::sleep).
+    // (Waiting: not `sleepAfter` yet; BlockNear: the block within reach of its foot, or able to reach
+    // its nodes within the horizon (blockCanReach); PiecesFalling: broken, a piece still moving within
+    // `pieceMaxTime`), or nullopt: it may sleep. The stems it touches are the caller's to check (an
+    // island sleeps as a whole: ForestMotion::sleep).
     std::optional<StemAwake> holds(const RigidBody& block, const PlacedTree& tree, const Stem& s, bool broken,
-                                   double lastBlockContact, double t) const;
+                                   double lastBlockContact, double t, double gravity) const;
 
     // The block could reach this stem within forest.return_horizon_s: its bounding sphere touches the
     // stem's surface at a node or at an intact connection (at the point of its axis closest to the

@@ -40,8 +40,8 @@ struct PhaseTimes {
 // block can still reach it (or it has not come to rest: StemActivity::mayRest), what keeps it from
 // sleeping (StemActivity::holds; Leaning is ForestMotion's: a stem it touches, directly or through
 // others, is held). The all-awake reference, whose stems never sleep, counts them as Waiting.
-enum class StemAwake { Touched, Waiting, BlockNear, PiecesFalling, Leaning };
-inline constexpr std::size_t kStemAwakeReasons = static_cast<std::size_t>(StemAwake::Leaning) + 1;  // the last one
+enum class StemAwake { Touched, Waiting, BlockNear, PiecesFalling, Leaning, NeighbourNear };
+inline constexpr std::size_t kStemAwakeReasons = static_cast<std::size_t>(StemAwake::NeighbourNear) + 1;  // the last one
 const char* name(StemAwake reason);
 
 // The stems' node-steps, the unit of a forested run's work (bench/bench_stem_step times one), by

@@ -102,8 +102,9 @@ struct PassOutputs {
     HazardStore* store = nullptr;  // every finished run, for --resume
 };
 
+// `leaveOut`, if not empty, marks runs not to make (sized as the pass's runs).
 HazardPass runPass(const std::string& name, const BlockVolumeScenes& blocks, const Dtm& dtm, const std::vector<ReleaseCell>& cells,
-                   const HazardOptions& o, HazardMap& map, const PassOutputs& outputs) {
+                   const HazardOptions& o, HazardMap& map, const PassOutputs& outputs, const std::vector<bool>& leaveOut = {}) {
     const dem::Scene& scene = blocks.scene(0);
     std::unordered_map<long, Eigen::Vector2d> treeAt;
     for (const auto& t : scene.forest().trees) treeAt[t.id] = {t.x, t.y};
@@ -115,6 +116,7 @@ HazardPass runPass(const std::string& name, const BlockVolumeScenes& blocks, con
         std::map<long, HazardStore::Finished> done;
         if (outputs.store) done = outputs.store->finished(name);
         for (long i = 0; i < total; ++i) {
+            if (!leaveOut.empty() && leaveOut[static_cast<std::size_t>(i)]) continue;
             const auto it = done.find(i);
             if (it == done.end()) {
                 toRun.push_back(i);
@@ -197,13 +199,19 @@ HazardPass runPass(const std::string& name, const BlockVolumeScenes& blocks, con
     HazardPass pass;
     pass.name = name;
     if (!o.blockVolumes.empty()) pass.blocksPerVolume.assign(blocks.classes(), 0);
+    pass.runFailed.assign(runs.size(), false);
     std::vector<double> path, reach;
     std::vector<BlockPath> keptPaths;
     std::vector<ImpactPoint> keptImpacts;
     for (std::size_t i = 0; i < runs.size(); ++i) {
         RunOutcome& r = runs[i];
+        if (!leaveOut.empty() && leaveOut[i]) {
+            ++pass.leftOutForPairing;
+            continue;
+        }
         if (r.failed) {
             ++pass.failed;
+            pass.runFailed[i] = true;
             continue;
         }
         const BlockTrace& t = r.trace;
@@ -261,6 +269,7 @@ std::vector<std::string> writeRasters(const std::string& dir, const HazardMap& m
 nlohmann::ordered_json passJson(const HazardPass& p) {
     return {{"blocks", p.blocks},
             {"failed_runs", p.failed},
+            {"left_out_for_pairing", p.leftOutForPairing},
             {"stop_reasons", {{"rest", p.rest}, {"left_domain", p.leftDomain}, {"time_limit", p.timeLimit}}},
             {"path_length_m", {{"p50", p.pathP50}, {"p90", p.pathP90}}},
             {"reach_horizontal_m", {{"p50", p.reachP50}, {"p90", p.reachP90}, {"max", p.reachMax}}},
@@ -371,7 +380,9 @@ HazardResults runHazard(const HazardOptions& o) {
     if (o.compareBare) {
         const dem::Scene bare = onSoils(dem::Scene(config, dtm.elevation));
         HazardMap bareMap(dtm.grid);
-        results.passes.push_back(runPass("bare", BlockVolumeScenes(bare, o.blockVolumes), dtm, cells, o, bareMap, outputs));
+        // The blocks whose forest run failed are left out here too: both maps count the same blocks.
+        const std::vector<bool> failedInForest = results.passes.front().runFailed;
+        results.passes.push_back(runPass("bare", BlockVolumeScenes(bare, o.blockVolumes), dtm, cells, o, bareMap, outputs, failedInForest));
         for (const auto& name : writeRasters(o.outDir + "/bare", bareMap, dtm, false)) results.rasters.push_back("bare/" + name);
         // What the forest takes off the reach probability: bare minus forest, in [-1, 1].
         protection = bareMap.reachProbability();

@@ -639,6 +639,41 @@ TEST_F(Hazard, DeadSoilStopsTheDemsBlocksSooner) {
     EXPECT_NE(errorOf([&] { runHazard(o); }).find("--soils needs --soil-types"), std::string::npos);
 }
 
+// With --compare-bare, blocks whose forest run failed (released inside one of the 1.2 m thick stems
+// standing on the release cells) are left out of the bare pass too: both maps count the same blocks,
+// and where as many blocks passed with the trees as without, the protection is 0 (it was 1/12 - 1/10
+// where 10 forest blocks were set against 12 bare ones).
+TEST_F(Hazard, TheBarePassLeavesOutTheBlocksWhoseForestRunFailed) {
+    HazardOptions o = exampleSlope();
+    o.releasePath = polygon("small.geojson", 925090, 6460090, 925110, 6460105,
+                            R"("crs": {"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::2154"}},)");
+    std::string trees = "x,y,dbh_cm\n";
+    for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 7; ++j) trees += std::to_string(925090.5 + 3.5 * i) + "," + std::to_string(6460085.5 + 3.5 * j) + ",120\n";
+    o.treesPath = write("thick.csv", trees);
+    o.compareBare = true;
+    o.outDir = (dir_ / "paired").string();
+    const HazardResults r = runHazard(o);
+    ASSERT_EQ(r.passes.size(), 2u);
+    const HazardPass &forest = r.passes[0], &bare = r.passes[1];
+    ASSERT_GT(forest.failed, 0) << "the test needs a forest run that cannot start";
+    EXPECT_EQ(bare.leftOutForPairing, forest.failed);
+    EXPECT_EQ(bare.failed, 0);
+    EXPECT_EQ(bare.blocks, forest.blocks);
+    const Dtm withTrees = readDtm((dir_ / "paired/passing_count.tif").string());
+    const Dtm without = readDtm((dir_ / "paired/bare/passing_count.tif").string());
+    const Dtm protection = readDtm((dir_ / "paired/protection.tif").string());
+    int equal = 0;
+    for (int row = 0; row < withTrees.grid.rows; ++row)
+        for (int c = 0; c < withTrees.grid.columns; ++c) {
+            const Eigen::Vector2d p = withTrees.grid.centre(c, row);
+            if (withTrees.elevation.height(p.x(), p.y()) != without.elevation.height(p.x(), p.y())) continue;
+            ++equal;
+            EXPECT_EQ(protection.elevation.height(p.x(), p.y()), 0.0) << "cell " << c << "," << row;
+        }
+    EXPECT_GT(equal, 0);
+}
+
 // A soil too soft to hold the block up fails every run alike: the map says so once, as an input error
 // before the first run, naming the key (it used to let each of the 48 runs fail, then stop without a
 // map, and a store in the folder that the corrected command then refused). The soil map's types and

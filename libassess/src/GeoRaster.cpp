@@ -79,8 +79,16 @@ GeoRaster readRaster(const std::string& path) {
     if (!(band->GetMaskFlags() & GMF_ALL_VALID) &&
         band->GetMaskBand()->RasterIO(GF_Read, 0, 0, g.columns, g.rows, valid.data(), g.columns, g.rows, GDT_Byte, 0, 0) != CE_None)
         throw InputError(path, 0, "cannot read which cells hold a value (" + gdalLastError() + ")");
+    // A band stored scaled (heights as integer centimetres, say) gives its values as scale x stored +
+    // offset; read raw, a DTM of 0.01 m units was taken for heights a hundred times too large.
+    int hasScale = 0, hasOffset = 0;
+    const double scale = band->GetScale(&hasScale), offset = band->GetOffset(&hasOffset);
+    const bool scaled = (hasScale && scale != 1) || (hasOffset && offset != 0);
     for (std::size_t i = 0; i < z.size(); ++i)
-        if (valid[i] == 0 || !std::isfinite(z[i])) z[i] = std::nan("");
+        if (valid[i] == 0 || !std::isfinite(z[i]))
+            z[i] = std::nan("");
+        else if (scaled)
+            z[i] = (hasScale ? scale : 1.0) * z[i] + (hasOffset ? offset : 0.0);
     return raster;
 }
 

@@ -157,6 +157,29 @@ TEST_F(Hazard, Float32NoDataIsRecognised) {
     EXPECT_EQ(back.elevation.noDataCells(), 1);
 }
 
+// A DTM stored as integer centimetres with a band scale of 0.01 and an offset (GDAL's unscaled value:
+// scale x stored + offset) is read in metres; it was read raw, 100 times too high, without a word.
+TEST_F(Hazard, AScaledDtmIsReadInItsUnits) {
+    initGdal();
+    const std::string tif = (dir_ / "cm.tif").string();
+    {
+        GDALDatasetUniquePtr d(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(tif.c_str(), 3, 2, 1, GDT_Int32, nullptr));
+        ASSERT_TRUE(d);
+        double gt[6] = {600000, 5, 0, 5100010, 0, -5};
+        d->SetGeoTransform(gt);
+        GDALRasterBand* band = d->GetRasterBand(1);
+        band->SetScale(0.01);
+        band->SetOffset(1000);
+        std::vector<GInt32> cm{0, 150, 300, 1000, 1150, 1300};
+        ASSERT_EQ(band->RasterIO(GF_Write, 0, 0, 3, 2, cm.data(), 3, 2, GDT_Int32, 0, 0), CE_None);
+    }
+    const Dtm d = readDtm(tif);
+    const auto at = [&](int c, int r) { const Eigen::Vector2d p = d.grid.centre(c, r); return d.elevation.height(p.x(), p.y()); };
+    EXPECT_DOUBLE_EQ(at(0, 0), 1000);
+    EXPECT_DOUBLE_EQ(at(2, 0), 1003);
+    EXPECT_DOUBLE_EQ(at(1, 1), 1011.5);
+}
+
 TEST_F(Hazard, GeoTiffRoundTripKeepsValuesGridAndNoData) {
     const Dtm d = readDtm(dtm("d.asc", 3, 2, 5.0, 600000, 5100000, [](int c, int r) { return c + 10.0 * r; }, true));
     const std::string tif = (dir_ / "out.tif").string();

@@ -52,14 +52,12 @@ constexpr double kPathSpacingM = 1.0, kPathGapS = 0.5;
 constexpr long kMostRunsWithPaths = 100000;
 
 // Empty or new: a hazard run never mixes its rasters with someone else's files. Resumed: the map's own
-// folder, whose path and VTK files are written again whole.
+// folder (its path and VTK files are written again whole, once the store accepts the inputs).
 void prepareOutDir(const std::string& dir, bool resume) {
     if (dir.empty()) throw InputError("--out DIR is required");
     if (resume) {
         if (!fs::is_regular_file(fs::path(dir) / "hazard.sqlite"))
             throw InputError("--resume: " + dir + " holds no map to resume (no hazard.sqlite): give the --out of the interrupted map");
-        fs::remove(fs::path(dir) / "trajectories.gpkg");
-        fs::remove_all(fs::path(dir) / "vtk");
         return;
     }
     if (fs::exists(dir) && (!fs::is_directory(dir) || !fs::is_empty(dir)))
@@ -70,13 +68,16 @@ void prepareOutDir(const std::string& dir, bool resume) {
 std::string hashOf(const std::string& path) { return path.empty() ? "none" : toHex(fileFingerprint(path), 16); }
 
 // Everything the maps depend on, a line each, as the store keeps it: a resumed map must be the same
-// map. Files by their contents (a moved file is the same input), the forest by its stems.
+// map. Files by their contents (a moved file is the same input), the forest by its stems: all that a
+// run reads of them (a trees file may give heights and crowns instead of the allometry's).
 std::vector<std::string> inputsOf(const HazardOptions& o, const stand::Forest& forest) {
     std::string stems;
-    for (const auto& t : forest.trees) stems += exactText(t.x) + ' ' + exactText(t.y) + ' ' + exactText(t.dbhCm) + ' ' + std::to_string(t.stool.value_or(0)) + '\n';
+    for (const auto& t : forest.trees)
+        stems += exactText(t.x) + ' ' + exactText(t.y) + ' ' + exactText(t.dbhCm) + ' ' + std::to_string(t.stool.value_or(0)) + ' ' +
+                 exactText(t.heightM) + ' ' + exactText(t.crownLengthM) + ' ' + exactText(t.crownMassKg) + '\n';
     std::string volumes;
     for (const auto& v : o.blockVolumes) volumes += exactText(v.volumeM3) + ':' + exactText(v.weight) + ' ';
-    std::vector<std::string> lines{"sylvarock hazard store 1",
+    std::vector<std::string> lines{"sylvarock hazard store 2",
                                    "dtm " + hashOf(o.dtmPath),
                                    "release " + hashOf(o.releasePath),
                                    "forest " + std::to_string(forest.trees.size()) + " stems " + toHex(fnv1a64(stems), 16),
@@ -358,6 +359,10 @@ HazardResults runHazard(const HazardOptions& o) {
     const stand::Forest& trees = scene.forest();
     const std::unique_ptr<HazardStore> store =
         o.resume ? HazardStore::resume(storePath, inputsOf(o, trees)) : HazardStore::create(storePath, inputsOf(o, trees));
+    if (o.resume) {  // the same map: its paths are written again whole (a refused resume leaves them)
+        fs::remove(fs::path(o.outDir) / "trajectories.gpkg");
+        fs::remove_all(fs::path(o.outDir) / "vtk");
+    }
     if (!o.standsPath.empty()) stand::writeForestCsv(o.outDir + "/forest.csv", trees);
 
     results.releaseCells = static_cast<long>(cells.size());
@@ -376,6 +381,7 @@ HazardResults runHazard(const HazardOptions& o) {
     results.rasters = writeRasters(o.outDir, map, dtm, forested);
     const FigureSet figure = drawHazardMap(o.outDir, dtm, map.reachProbability(), scene.forest());
     results.figureWarning = figure.warning;
+    for (const auto& f : figure.files) results.files.push_back(f);
     std::vector<float> protection;  // with compareBare
     if (o.compareBare) {
         const dem::Scene bare = onSoils(dem::Scene(config, dtm.elevation));

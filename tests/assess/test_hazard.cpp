@@ -340,6 +340,8 @@ TEST_F(Hazard, SmallSlopeEndToEnd) {
     EXPECT_EQ(magic, "\x89PNG");
     EXPECT_GT(fs::file_size(dir_ / "one/map.svg"), 1000u);
     EXPECT_GT(fs::file_size(dir_ / "one/rasters.png"), 1000u);
+    for (const char* f : {"map.svg", "map.png", "rasters.png"})  // summary.json's other_files
+        EXPECT_NE(std::find(one.files.begin(), one.files.end(), f), one.files.end()) << f;
     ASSERT_EQ(one.passes.size(), 2u);
     EXPECT_EQ(one.passes[0].blocks, 200);
     EXPECT_GT(one.passes[0].treeImpacts, 0);
@@ -495,10 +497,22 @@ TEST_F(Hazard, ResumedMapRunsWhatItLacksAndEqualsTheWholeMap) {
     ASSERT_TRUE(gpkg);
     EXPECT_EQ(gpkg->GetLayerByName("paths_forest")->GetFeatureCount(), 200);
 
-    // Another input is refused, naming it; so is a folder without a store.
+    // Another input is refused, naming it, and leaves the map as it was; so is a folder without a store.
     o.seed = 5;
     EXPECT_NE(errorOf([&] { runHazard(o); }).find("started with 'seed 4', this command gives 'seed 5'"), std::string::npos);
+    EXPECT_TRUE(fs::exists(dir_ / "cut/trajectories.gpkg")) << "a refused resume deleted the map's paths";
     o.seed = 4;
+    // The same stems with heights of their own (the trees file may give them) are another forest.
+    const std::string sameStems = o.treesPath;
+    std::ifstream in(sameStems);
+    std::string line, tall;
+    std::getline(in, line);
+    tall = line + ",height_m\n";
+    while (std::getline(in, line)) tall += line + ",30\n";
+    o.treesPath = write("tall.csv", tall);
+    EXPECT_NE(errorOf([&] { runHazard(o); }).find("--resume with other inputs: the map was started with 'forest 400 stems"), std::string::npos)
+        << errorOf([&] { runHazard(o); });
+    o.treesPath = sameStems;
     o.outDir = (dir_ / "nothing").string();
     fs::create_directories(o.outDir);
     EXPECT_NE(errorOf([&] { runHazard(o); }).find("holds no map to resume"), std::string::npos);

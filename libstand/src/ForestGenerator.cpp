@@ -61,25 +61,22 @@ public:
     }
 
     // The first `count` stems of the stool, around a uniform centroid and rotated by a uniform angle
-    // (stools have no preferred orientation). One stem left of a trimmed stool is a single tree.
+    // (stools have no preferred orientation). One stem left of a trimmed stool is a single tree. A
+    // stool's stems keep their clearance from the stems placed before, not from one another: they
+    // stand as the inventory measured them, often closer (coppice stems grow fused at the base).
     void placeStool(const StoolTemplate& stool, std::size_t count) {
         for (long attempt = 0; attempt < settings_.maxAttempts; ++attempt) {
             const Vec centroid = uniformPoint();
             const double angle = 2 * M_PI * gsl_rng_uniform(rng_);
             const Eigen::Matrix2d rotation = Eigen::Rotation2Dd(angle).toRotationMatrix();
-            const std::size_t before = grid_.size();
             std::vector<Vec> positions;
             for (std::size_t i = 0; i < count; ++i) {
                 const Vec p = roundToMillimetre(centroid + rotation * stool.offsets[i]);
-                const double radius = stool.stems[i].dbhCm / 200.0;
-                if (!extent_.contains(p) || !grid_.isFree(p, radius)) break;
-                grid_.insert(p, radius);
+                if (!extent_.contains(p) || !grid_.isFree(p, stool.stems[i].dbhCm / 200.0)) break;
                 positions.push_back(p);
             }
-            if (positions.size() < count) {
-                grid_.truncate(before);
-                continue;
-            }
+            if (positions.size() < count) continue;
+            for (std::size_t i = 0; i < count; ++i) grid_.insert(positions[i], stool.stems[i].dbhCm / 200.0);
             const std::optional<long> id = count >= 2 ? std::optional<long>(++result_.stools) : std::nullopt;
             for (std::size_t i = 0; i < count; ++i) addTree(positions[i], stool.stems[i], id);
             if (id) result_.stemsInStools += count;

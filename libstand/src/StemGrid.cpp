@@ -43,20 +43,8 @@ void StemGrid::insert(const Eigen::Vector2d& p, double radiusM) {
     const long cell = cellIndex(column(p.x()), row(p.y()));
     next_.push_back(head_[cell]);
     head_[cell] = static_cast<long>(points_.size());
-    cellOf_.push_back(cell);
     points_.push_back(p);
     radii_.push_back(radiusM);
-}
-
-void StemGrid::truncate(std::size_t count) {
-    // Stems are removed newest first, and each is the head of its cell's list at that moment.
-    while (points_.size() > count) {
-        head_[cellOf_.back()] = next_.back();
-        next_.pop_back();
-        cellOf_.pop_back();
-        points_.pop_back();
-        radii_.pop_back();
-    }
 }
 
 }  // namespace sylva::stand

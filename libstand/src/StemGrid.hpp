@@ -19,8 +19,6 @@ public:
     // True if a stem of radius r at p is at least r + r_j + clearance from every inserted stem j.
     bool isFree(const Eigen::Vector2d& p, double radiusM) const;
     void insert(const Eigen::Vector2d& p, double radiusM);
-    // Removes the most recently inserted stems until `count` remain (undoes a partly placed stool).
-    void truncate(std::size_t count);
     std::size_t size() const { return points_.size(); }
 
 private:
@@ -33,7 +31,6 @@ private:
     long nx_, ny_;
     std::vector<long> head_;  // per cell: last inserted stem in it, or -1
     std::vector<long> next_;  // per stem: previous stem in the same cell, or -1
-    std::vector<long> cellOf_;
     std::vector<Eigen::Vector2d> points_;
     std::vector<double> radii_;
 };

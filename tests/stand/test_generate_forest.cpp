@@ -238,6 +238,33 @@ TEST(ForestGenerator, AnExtentTooLargeForAnyForestIsRefusedAtOnce) {
     }
 }
 
+// Coppice stems often stand closer than the clearance asked between trees (here 20 cm stems 15 cm
+// apart, fused at the base): a stool is placed as the inventory measured it, clear of the other
+// stems only. Every placement used to fail on the stool's own stems, blamed on the extent.
+TEST(ForestGenerator, AStoolsStemsMayStandCloserThanTheClearance) {
+    Inventory inv;
+    inv.name = "fused";
+    inv.plots.push_back({"1", Window::rectangle(0, 0, 20, 20)});
+    for (int k = 0; k < 4; ++k) {
+        const std::string stool = std::to_string(k + 1);
+        const double x = 3 + 4.0 * k;
+        inv.stems.push_back(stem(stool + "a", x, 10, 20, stool));
+        inv.stems.push_back(stem(stool + "b", x + 0.15, 10, 20, stool));
+    }
+    const StandCatalogue c(inv, "fused.csv");
+    const GeneratedForest g = generateForest(c, Window::rectangle(0, 0, 100, 100), settingsFor(ForestStructure::Aggregated, 3));
+    ASSERT_EQ(g.forest.trees.size(), 200u);
+    for (const auto& [id, members] : stemsByStool(g.forest)) {
+        ASSERT_EQ(members.size(), 2u);
+        EXPECT_NEAR(std::hypot(members[0]->x - members[1]->x, members[0]->y - members[1]->y), 0.15, 2e-3) << "stool " << id;  // mm rounding
+    }
+    for (const Tree& a : g.forest.trees)
+        for (const Tree& b : g.forest.trees)
+            if (a.id < b.id && a.stool != b.stool) {  // 1 cm clearance, 1e-9 m for the distance's rounding
+                EXPECT_GE(std::hypot(a.x - b.x, a.y - b.y) - 0.2, 0.01 - 1e-9) << a.id << " and " << b.id;
+            }
+}
+
 // A sparse stand over a large extent: its placement grid once had a cell per exclusion distance
 // (0.61 m here), 2.7e11 cells for 204 800 stems, and the generator died of std::bad_alloc. The cells
 // now follow the stems' number.

@@ -188,7 +188,7 @@ Inventory readInventory(const std::string& stemsCsv, const std::string& plotsCsv
         inv.stems.push_back(std::move(s));
     }
 
-    inv.hasDiameters = std::any_of(inv.stems.begin(), inv.stems.end(), measured);
+    inv.hasDiameters = true;  // dbh_cm is a required column
     inv.warnings = dataWarnings(inv, stemsCsv, plotsCsv);
     return inv;
 }

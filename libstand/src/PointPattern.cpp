@@ -43,7 +43,7 @@ Inventory readPointPattern(const std::string& csv, const Window& window) {
         }
         inv.stems.push_back(std::move(s));
     }
-    inv.hasDiameters = std::any_of(inv.stems.begin(), inv.stems.end(), measured);
+    inv.hasDiameters = cDbh.has_value();
     inv.warnings = dataWarnings(inv, csv, "window");
     return inv;
 }

@@ -16,13 +16,19 @@ DendrometricStatistics dendrometrics(const std::vector<const Stem*>& stems, doub
     s.stemsPerHa = n / s.areaHa;
     if (hasDiameters) {
         double basal = 0, sum = 0, count = 0;
+        std::size_t unknown = 0;
         for (const Stem* t : stems) {
-            if (!measured(*t)) continue;  // below breast height or not measured (the warnings count them)
+            if (!measured(*t)) {  // below breast height or not measured (the warnings count them)
+                unknown += t->dbhCm == 0 ? 0 : 1;
+                continue;
+            }
             basal += M_PI * (t->dbhCm / 200) * (t->dbhCm / 200);  // m², dbh in cm
             sum += t->dbhCm;
             ++count;
         }
-        s.basalAreaM2Ha = basal / s.areaHa;
+        // Stems below breast height add nothing to G; stems whose DBH is unknown leave it unknown
+        // unless some were measured (then G is theirs, as the warnings say).
+        if (count > 0 || unknown == 0) s.basalAreaM2Ha = basal / s.areaHa;
         if (count > 0) s.meanDbhCm = sum / count;
         if (count > 1) {
             double ss = 0;

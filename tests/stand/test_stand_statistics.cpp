@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 
 #include "libcommon/CsvTable.hpp"
 #include "libstand/Inventory.hpp"
@@ -93,6 +94,22 @@ TEST(StandStatistics, AStoolIdInTwoPlotsNamesTwoStools) {
     EXPECT_EQ(s.stand.nStools, 2u);
     EXPECT_DOUBLE_EQ(*s.stand.stemsPerStool, 2);
     EXPECT_EQ(s.plots[1].stats.nStools, 1u);
+}
+
+// Stems below breast height (DBH 0) have no basal area: a stand of them only has G = 0, and is warned
+// of (it printed no G and no warning). Stems whose DBH is unknown leave G unknown.
+TEST(StandStatistics, StemsBelowBreastHeightGiveNoBasalAreaAndAWarning) {
+    const std::string stems = ::testing::TempDir() + "stems_all_below_breast_height.csv";
+    std::ofstream(stems) << "plot,stem,x,y,dbh_cm\n1,1,2,3,0\n1,2,2.5,3.5,0\n1,3,15,15,0\n2,4,5,5,0\n";
+    Inventory inv = readInventory(stems, data("plots_ok.csv"));
+    const StandStatistics zero = standStatistics(inv);
+    ASSERT_TRUE(zero.stand.basalAreaM2Ha.has_value());
+    EXPECT_EQ(*zero.stand.basalAreaM2Ha, 0.0);
+    EXPECT_FALSE(zero.stand.meanDbhCm.has_value());
+    ASSERT_EQ(dataWarnings(inv, "s.csv", "p.csv").size(), 1u);
+    EXPECT_NE(dataWarnings(inv, "s.csv", "p.csv")[0].find("4 below breast height"), std::string::npos);
+    for (Stem& s : inv.stems) s.dbhCm = std::nan("");
+    EXPECT_FALSE(standStatistics(inv).stand.basalAreaM2Ha.has_value());
 }
 
 TEST(StandStatistics, EmptyPlotLowersNAndG) {

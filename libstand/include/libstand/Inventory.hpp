@@ -29,7 +29,7 @@ struct Inventory {
     std::vector<Plot> plots;
     std::vector<Stem> stems;
     std::vector<std::string> warnings;  // valid but noteworthy data (stems at identical positions, empty plots)
-    bool hasDiameters = true;           // some stem has a measured DBH (false: a pattern without dbh_cm)
+    bool hasDiameters = true;           // the stems have a DBH column (false: a pattern without dbh_cm)
 
     double areaHa() const;
 };

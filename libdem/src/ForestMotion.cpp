@@ -343,7 +343,8 @@ void ForestMotion::sleep(const RigidBody& block, double t) {
         if (awake_[i].moving && (awake_[i].lastBlockContact == now_ || awake_[i].lastBlockNear == now_)) islands_.forbid(i);
     for (std::size_t i = 0; i < n; ++i) {
         const AwakeStem& a = awake_[i];
-        if (a.moving && islands_.allowed(i) && !activity_.mayRest(block, a.stem, a.broken, a.lastBlockContact, a.lastOtherContact, t, cfg_.gravity))
+        if (a.moving && islands_.allowed(i) &&
+            !activity_.mayRest(block, a.stem, a.broken, a.lastBlockContact, a.lastOtherContact, t, cfg_.gravity))
             islands_.forbid(i);
     }
     for (std::size_t i = 0; i < n; ++i)

@@ -19,7 +19,6 @@ public:
     // True if a stem of radius r at p is at least r + r_j + clearance from every inserted stem j.
     bool isFree(const Eigen::Vector2d& p, double radiusM) const;
     void insert(const Eigen::Vector2d& p, double radiusM);
-    std::size_t size() const { return points_.size(); }
 
 private:
     long cellIndex(long ix, long iy) const { return iy * nx_ + ix; }

@@ -96,6 +96,8 @@ int runHazardCommand(int argc, const char* const* argv) {
         std::printf("%-6s %ld blocks: %ld at rest, %ld left the DTM, %ld at the time limit; path length p50 %.1f m, p90 %.1f m; "
                     "reach p50 %.1f m, max %.1f m; %ld tree impacts\n",
                     p.name.c_str(), p.blocks, p.rest, p.leftDomain, p.timeLimit, p.pathP50, p.pathP90, p.reachP50, p.reachMax, p.treeImpacts);
+        if (p.leftOutForPairing > 0)
+            std::printf("       %ld blocks left out: their forest run failed (the passes compare the same blocks)\n", p.leftOutForPairing);
         for (std::size_t k = 0; k < p.blocksPerVolume.size(); ++k)
             std::printf("       %ld blocks of %g m3\n", p.blocksPerVolume[k], h.blockVolumes[k].volumeM3);
         failed += p.failed;
@@ -103,7 +105,7 @@ int runHazardCommand(int argc, const char* const* argv) {
     if (!r.figureWarning.empty()) std::cerr << "sylvarock hazard: warning: " << r.figureWarning << "\n";
     std::string others;
     for (const auto& f : r.files) others += ", " + f;
-    std::printf("rasters, map.svg, map.png%s and summary.json in %s (%.1f s)\n", others.c_str(), h.outDir.c_str(), wall);
+    std::printf("rasters%s and summary.json in %s (%.1f s)\n", others.c_str(), h.outDir.c_str(), wall);
     if (failed) {
         std::cerr << "sylvarock hazard: " << failed
                   << " run(s) could not start or stopped on a numerical error (the notes above say which) and are left out "

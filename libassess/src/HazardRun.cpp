@@ -103,9 +103,11 @@ struct PassOutputs {
     HazardStore* store = nullptr;  // every finished run, for --resume
 };
 
-// `leaveOut`, if not empty, marks runs not to make (sized as the pass's runs).
+// `leaveOut`, if not empty, marks runs not to make; `failedRuns`, if given, is set to the runs that
+// failed (both sized as the pass's runs).
 HazardPass runPass(const std::string& name, const BlockVolumeScenes& blocks, const Dtm& dtm, const std::vector<ReleaseCell>& cells,
-                   const HazardOptions& o, HazardMap& map, const PassOutputs& outputs, const std::vector<bool>& leaveOut = {}) {
+                   const HazardOptions& o, HazardMap& map, const PassOutputs& outputs, const std::vector<bool>& leaveOut = {},
+                   std::vector<bool>* failedRuns = nullptr) {
     const dem::Scene& scene = blocks.scene(0);
     std::unordered_map<long, Eigen::Vector2d> treeAt;
     for (const auto& t : scene.forest().trees) treeAt[t.id] = {t.x, t.y};
@@ -200,7 +202,7 @@ HazardPass runPass(const std::string& name, const BlockVolumeScenes& blocks, con
     HazardPass pass;
     pass.name = name;
     if (!o.blockVolumes.empty()) pass.blocksPerVolume.assign(blocks.classes(), 0);
-    pass.runFailed.assign(runs.size(), false);
+    if (failedRuns) failedRuns->assign(runs.size(), false);
     std::vector<double> path, reach;
     std::vector<BlockPath> keptPaths;
     std::vector<ImpactPoint> keptImpacts;
@@ -212,7 +214,7 @@ HazardPass runPass(const std::string& name, const BlockVolumeScenes& blocks, con
         }
         if (r.failed) {
             ++pass.failed;
-            pass.runFailed[i] = true;
+            if (failedRuns) (*failedRuns)[i] = true;
             continue;
         }
         const BlockTrace& t = r.trace;
@@ -377,7 +379,8 @@ HazardResults runHazard(const HazardOptions& o) {
     outputs.store = store.get();
     if (o.writeVtk) writeVtkScene(o.outDir + "/vtk", dtm, scene.forest());
     HazardMap map(dtm.grid);
-    results.passes.push_back(runPass(forested ? "forest" : "bare", blocks, dtm, cells, o, map, outputs));
+    std::vector<bool> failedInForest;
+    results.passes.push_back(runPass(forested ? "forest" : "bare", blocks, dtm, cells, o, map, outputs, {}, &failedInForest));
     results.rasters = writeRasters(o.outDir, map, dtm, forested);
     const FigureSet figure = drawHazardMap(o.outDir, dtm, map.reachProbability(), scene.forest());
     results.figureWarning = figure.warning;
@@ -387,7 +390,6 @@ HazardResults runHazard(const HazardOptions& o) {
         const dem::Scene bare = onSoils(dem::Scene(config, dtm.elevation));
         HazardMap bareMap(dtm.grid);
         // The blocks whose forest run failed are left out here too: both maps count the same blocks.
-        const std::vector<bool> failedInForest = results.passes.front().runFailed;
         results.passes.push_back(runPass("bare", BlockVolumeScenes(bare, o.blockVolumes), dtm, cells, o, bareMap, outputs, failedInForest));
         for (const auto& name : writeRasters(o.outDir + "/bare", bareMap, dtm, false)) results.rasters.push_back("bare/" + name);
         // What the forest takes off the reach probability: bare minus forest, in [-1, 1].

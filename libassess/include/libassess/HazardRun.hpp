@@ -41,7 +41,6 @@ struct HazardPass {
     // Of the bare pass: runs not made because their forest run failed, so that both passes count the
     // same blocks (the protection map compares paired runs).
     long leftOutForPairing = 0;
-    std::vector<bool> runFailed;  // per run (release cell x runs per cell): it failed
     double pathP50 = 0, pathP90 = 0, reachP50 = 0, reachP90 = 0, reachMax = 0;  // m
     long treeImpacts = 0;
     std::vector<long> blocksPerVolume;  // with HazardOptions::blockVolumes: blocks (not failed) of each class

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 
 namespace sylva::dem {
@@ -126,13 +127,12 @@ void ForestMotion::setMovingWhereTouched() {
 
 // A bent or broken stem can reach a neighbour the block never came near: wake the stems that
 // the displaced nodes of moving stems could touch before the next check. Checked every few steps,
-// with the nodes' travel over that time added to the margin. Each stem found within reach, awake
-// already or woken, is marked so: it may not sleep until a check finds it out of reach (sleep).
+// with the nodes' travel over that time added to the margin. Each pair found is kept until the next
+// check: the stem reached may not sleep while the moving one stays awake (sleep).
 void ForestMotion::wakeNeighbours() {
     if (++sinceNeighbourCheck_ < kNeighbourCheckInterval) return;
     sinceNeighbourCheck_ = 0;
-    lastNeighbourCheck_ = now_;
-    toWake_.clear();  // woken after the loop: waking grows awake_, which the loop reads
+    neighbourReach_.clear();  // woken after the loop: waking grows awake_, which the loop reads
     for (const AwakeStem& a : awake_) {
         // A stem at rest reaches nothing it did not reach when it stopped; woken by it, a sleeping
         // neighbour would stand awake for sleep_after_s, fall asleep and be woken again.
@@ -146,15 +146,17 @@ void ForestMotion::wakeNeighbours() {
             nearTrees_.clear();
             trees_.near(p.x(), p.y(), reach + 0.75 * trees_.thickest(), nearTrees_);
             for (std::uint32_t j : nearTrees_)
-                if (j != a.tree && StemActivity::nodeReaches(p, reach, trees_.tree(j))) toWake_.push_back(j);
+                if (j != a.tree && StemActivity::nodeReaches(p, reach, trees_.tree(j))) neighbourReach_.push_back({a.tree, j});
         }
     }
-    std::sort(toWake_.begin(), toWake_.end());
-    toWake_.erase(std::unique(toWake_.begin(), toWake_.end()), toWake_.end());
-    for (std::uint32_t j : toWake_) {
-        if (!awake(j)) wake(j, now_);
-        awake(j)->lastNeighbourNear = now_;
-    }
+    const auto order = [](const NeighbourReach& x, const NeighbourReach& y) {
+        return std::tie(x.reached, x.moving) < std::tie(y.reached, y.moving);
+    };
+    const auto same = [](const NeighbourReach& x, const NeighbourReach& y) { return x.reached == y.reached && x.moving == y.moving; };
+    std::sort(neighbourReach_.begin(), neighbourReach_.end(), order);  // woken in tree order, whatever found them
+    neighbourReach_.erase(std::unique(neighbourReach_.begin(), neighbourReach_.end(), same), neighbourReach_.end());
+    for (const NeighbourReach& r : neighbourReach_)
+        if (!awake(r.reached)) wake(r.reached, now_);
 }
 
 double ForestMotion::stableStep(const RigidBody& block, StableStep& blockStep) const {
@@ -351,16 +353,23 @@ void ForestMotion::sleep(const RigidBody& block, double t) {
         if (awake_[i].moving && islands_.allowed(i)) rest(awake_[i]);
 
     // Sleep: nothing holds any stem of the island (StemActivity::holds); the others lean on the held ones.
+    // A stem a moving neighbour could reach at the last check sleeps with that neighbour: asleep
+    // before it, it would be woken again by the next check; kept awake for it whatever, two stems
+    // swaying within reach of each other (a stool's) held each other to the end of the run.
+    reachedByNeighbour_.assign(n, false);
+    for (const NeighbourReach& r : neighbourReach_) {
+        const auto from = awakeSlot_.find(r.moving), to = awakeSlot_.find(r.reached);
+        if (from == awakeSlot_.end() || to == awakeSlot_.end()) continue;
+        islands_.join(from->second, to->second);
+        reachedByNeighbour_[to->second] = true;
+    }
     islands_.allowAll();
     held_.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
         const AwakeStem& a = awake_[i];
-        // One the block came within a step's approach of holds as one it may reach (rest, above); one
-        // a moving neighbour could reach at the last check would be woken again by the next.
+        // One the block came within a step's approach of holds as one it may reach (rest, above).
         if (a.lastBlockNear == now_)
             held_[i] = StemAwake::BlockNear;
-        else if (a.lastNeighbourNear == lastNeighbourCheck_)
-            held_[i] = StemAwake::NeighbourNear;
         else
             held_[i] = activity_.holds(block, trees_.tree(a.tree), a.stem, a.broken, a.lastBlockContact, t, cfg_.gravity);
         if (held_[i]) islands_.forbid(i);
@@ -368,7 +377,7 @@ void ForestMotion::sleep(const RigidBody& block, double t) {
     for (std::size_t k = n; k-- > 0;) {
         AwakeStem& a = awake_[k];
         if (!islands_.allowed(k)) {
-            a.heldBy = held_[k] ? *held_[k] : StemAwake::Leaning;
+            a.heldBy = held_[k] ? *held_[k] : reachedByNeighbour_[k] ? StemAwake::NeighbourNear : StemAwake::Leaning;
             continue;
         }
         impacts_.close(a.tree, block, a.stem);

@@ -455,6 +455,34 @@ TEST(ExtremeForest, BlockThroughStemsTouchingAtGenerationCompletes) {
     EXPECT_LT(r.impacts[0].energyAfter, r.impacts[0].energyBefore);
 }
 
+// The stems of a stool stand within reach of each other's displaced nodes. Each used to hold the
+// other awake for as long as the other moved (a moving neighbour within reach), so a pair the block
+// had set swaying or broken never slept: both were stepped until the block stopped, tens of seconds
+// later (up to 3.6 s of CPU a run through this forest, against 0.1 to 0.2 s now). Within reach of
+// each other they now sleep together once nothing else holds them: the node-steps a neighbour holds
+// stay below those the block's own touches take (with the bug, 34 times those in these 4 runs).
+TEST(ExtremeForest, StoolStemsSwayingWithinReachOfEachOtherSleepOnceTheBlockHasGone) {
+    std::string rows;  // stools of two 20 cm stems 15 cm apart, every 12 m along and across the slope
+    for (int i = 0; i < 41; ++i)
+        for (int j = 0; j < 16; ++j) {
+            const double x = 135 + 12 * i, y = 5 + 12 * j + (i % 2 ? 6 : 0);
+            rows += std::to_string(x) + "," + std::to_string(y) + ",20\n" + std::to_string(x + 0.15) + "," + std::to_string(y) + ",20\n";
+        }
+    const Scene scene(loadScene(std::string(SYLVAROCK_DATA) + "/scenes/no-forest.ini",
+                                {"forest.file=" + forestCsv("stool-grid", rows)}));
+    CampaignOptions o;
+    o.runs = 4;
+    o.seed = 9;
+    NodeSteps n;
+    std::size_t impacts = 0;
+    for (const RunResult& r : runCampaign(scene, o)) n += r.nodeSteps, impacts += r.impacts.size();
+    std::printf("stool grid, 4 runs: %zu impacts; node-steps touched %llu, a neighbour near %llu, of %llu\n", impacts,
+                static_cast<unsigned long long>(n[StemAwake::Touched]),
+                static_cast<unsigned long long>(n[StemAwake::NeighbourNear]), static_cast<unsigned long long>(n.total()));
+    ASSERT_GE(impacts, 4u);
+    EXPECT_LT(n[StemAwake::NeighbourNear], n[StemAwake::Touched]);
+}
+
 // Steeper than any friction angle and than the cube's tipping angle: nothing can hold the block, it
 // leaves at the bottom, and it can never be faster than a free fall from its release.
 TEST(ExtremeTerrain, SlopeSteeperThanSixtyDegreesSendsTheBlockDown) {
@@ -533,5 +561,3 @@ TEST(ExtremeEnergyAudit, GrowthAboveTheToleranceStopsTheRunNamingWhereItAppeared
                 mentions(m, "integration.safety"))
         << m;
 }
-
-

@@ -100,9 +100,6 @@ private:
         // nor once it rests: it then starts from rest (StemStart::FromRest).
         bool stepped = false;
         double lastBlockNear = -std::numeric_limits<double>::infinity();  // time the block last came within a step's approach
-        // Time of the last neighbour check (wakeNeighbours) that found a moving stem's displaced node
-        // able to reach it.
-        double lastNeighbourNear = -std::numeric_limits<double>::infinity();
     };
     // Connections of two awake stems (indices into awake_) close enough to be checked each step.
     struct ConnectionPair {
@@ -173,6 +170,7 @@ private:
     bool stemPairsStale_ = true;
     Islands islands_;  // of the awake stems, by stem/stem contact (sleep)
     std::vector<std::optional<StemAwake>> held_;  // per awake stem: what holds it (StemActivity::holds)
+    std::vector<bool> reachedByNeighbour_;         // per awake stem: in neighbourReach_ as the one reached
     static constexpr double kStemPairSkin = 0.05;  // m
     static constexpr double kNodeBoxSlack = 0.05;  // m: a few block steps' travel, a hundred of a moving stem's
     DissipationLedger contactLedger_;
@@ -181,7 +179,12 @@ private:
     double now_ = 0, lastDt_ = 0;
     static constexpr int kNeighbourCheckInterval = 10;
     int sinceNeighbourCheck_ = 0;
-    double lastNeighbourCheck_ = -std::numeric_limits<double>::infinity();  // its time
+    // Found by the last neighbour check (wakeNeighbours): a moving stem and a stem one of its displaced
+    // nodes could reach before the next. The two sleep together or not at all (sleep).
+    struct NeighbourReach {
+        std::uint32_t moving, reached;
+    };
+    std::vector<NeighbourReach> neighbourReach_;
 
     double budget_ = 0;
     NodeSteps nodeSteps_;

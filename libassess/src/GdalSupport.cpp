@@ -20,6 +20,20 @@ std::string unreadable(const std::string& what) {
     return "cannot read it as " + what + (why.empty() ? " (no such file, or a format GDAL does not know)" : " (" + why + ")");
 }
 
+std::vector<std::string> datasetFiles(const std::string& path) {
+    initGdal();
+    CPLErrorReset();
+    std::vector<std::string> files{path};
+    const GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_VECTOR | GDAL_OF_READONLY));
+    CPLErrorReset();
+    if (!ds) return files;
+    char** list = ds->GetFileList();
+    for (int i = 0; list && list[i]; ++i)
+        if (std::string(list[i]) != path) files.emplace_back(list[i]);
+    CSLDestroy(list);
+    return files;
+}
+
 GDALDatasetUniquePtr openVectorFile(const std::string& path) {
     initGdal();
     CPLErrorReset();

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "libassess/GeoRaster.hpp"
 
@@ -17,6 +18,11 @@ std::string wktOf(const OGRSpatialReference* crs);
 
 // Why GDAL could not open a file as `what` ("a raster", "vector data"), for an InputError.
 std::string unreadable(const std::string& what);
+
+// The files GDAL reads for the dataset at `path`, that file first: a Shapefile's .shx, .dbf and .prj,
+// a raster's .aux.xml (which may scale its values) or .prj, a VRT's sources. Just `path` if GDAL
+// cannot open it.
+std::vector<std::string> datasetFiles(const std::string& path);
 
 // InputError naming the file if OGR cannot open it as vector data.
 GDALDatasetUniquePtr openVectorFile(const std::string& path);

@@ -13,6 +13,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "GdalSupport.hpp"
 #include "HazardStore.hpp"
 #include "RunOutcome.hpp"
 #include "libassess/BlockPaths.hpp"
@@ -67,6 +68,14 @@ void prepareOutDir(const std::string& dir, bool resume) {
 
 std::string hashOf(const std::string& path) { return path.empty() ? "none" : toHex(fileFingerprint(path), 16); }
 
+// A GDAL dataset by the contents of every file it is read from, not only the one named.
+std::string datasetHashOf(const std::string& path) {
+    if (path.empty()) return "none";
+    std::string hashes;
+    for (const std::string& file : datasetFiles(path)) hashes += toHex(fileFingerprint(file), 16);
+    return toHex(fnv1a64(hashes), 16);
+}
+
 // Everything the maps depend on, a line each, as the store keeps it: a resumed map must be the same
 // map. Files by their contents (a moved file is the same input), the forest by its stems: all that a
 // run reads of them (a trees file may give heights and crowns instead of the allometry's).
@@ -77,9 +86,9 @@ std::vector<std::string> inputsOf(const HazardOptions& o, const stand::Forest& f
                  exactText(t.heightM) + ' ' + exactText(t.crownLengthM) + ' ' + exactText(t.crownMassKg) + '\n';
     std::string volumes;
     for (const auto& v : o.blockVolumes) volumes += exactText(v.volumeM3) + ':' + exactText(v.weight) + ' ';
-    std::vector<std::string> lines{"sylvarock hazard store 2",
-                                   "dtm " + hashOf(o.dtmPath),
-                                   "release " + hashOf(o.releasePath),
+    std::vector<std::string> lines{"sylvarock hazard store 3",
+                                   "dtm " + datasetHashOf(o.dtmPath),
+                                   "release " + datasetHashOf(o.releasePath),
                                    "forest " + std::to_string(forest.trees.size()) + " stems " + toHex(fnv1a64(stems), 16),
                                    "scene " + hashOf(o.sceneFile),
                                    "model " + dem::toString(o.model),
@@ -87,8 +96,8 @@ std::vector<std::string> inputsOf(const HazardOptions& o, const stand::Forest& f
                                    "seed " + std::to_string(o.seed),
                                    "block volumes " + volumes,
                                    "soil types " + hashOf(o.soilTypesPath),
-                                   "soils " + hashOf(o.soilMapPath),
-                                   "check lines " + hashOf(o.checkLinesPath),
+                                   "soils " + datasetHashOf(o.soilMapPath),
+                                   "check lines " + datasetHashOf(o.checkLinesPath),
                                    std::string("compare bare ") + (o.compareBare ? "yes" : "no"),
                                    std::string("trajectories ") + (o.writeTrajectories || o.writeVtk ? "kept" : "not kept")};
     for (const auto& set : o.sceneOverrides) lines.push_back("set " + set);

@@ -513,6 +513,12 @@ TEST_F(Hazard, ResumedMapRunsWhatItLacksAndEqualsTheWholeMap) {
     EXPECT_NE(errorOf([&] { runHazard(o); }).find("--resume with other inputs: the map was started with 'forest 400 stems"), std::string::npos)
         << errorOf([&] { runHazard(o); });
     o.treesPath = sameStems;
+    // A file GDAL reads beside the one named is part of the input: here an .aux.xml that lifts the
+    // DTM by 100 m (GDAL applies a band's offset, GeoRaster with it).
+    const std::string aux = o.dtmPath + ".aux.xml";
+    std::ofstream(aux) << "<PAMDataset><PAMRasterBand band=\"1\"><Offset>100</Offset><Scale>1</Scale></PAMRasterBand></PAMDataset>\n";
+    EXPECT_NE(errorOf([&] { runHazard(o); }).find("the map was started with 'dtm "), std::string::npos) << errorOf([&] { runHazard(o); });
+    fs::remove(aux);
     o.outDir = (dir_ / "nothing").string();
     fs::create_directories(o.outDir);
     EXPECT_NE(errorOf([&] { runHazard(o); }).find("holds no map to resume"), std::string::npos);

@@ -31,19 +31,21 @@ private:
 
 // First time in [0, dt] at which the horizontal track p + v t comes within `reach` of `axis`, or
 // a negative number if it does not; `offset` is then the signed distance of the track from the
-// axis at its closest approach (left of the direction of travel positive).
+// axis at its closest approach (left of the direction of travel positive). A track that starts
+// within reach touches at once: a block released there, or one that came within reach over the
+// stem's top and has since dropped below it, would otherwise pass through the trunk.
 double firstTouch(const Vec3& p, const Vec3& v, double dt, const Vec3& axis, double reach, double& offset) {
     const double dx = p.x() - axis.x(), dy = p.y() - axis.y();
     const double a = v.x() * v.x() + v.y() * v.y();
     if (a == 0) return -1;
+    offset = (v.x() * dy - v.y() * dx) / std::sqrt(a);
     const double b = dx * v.x() + dy * v.y();  // half the linear coefficient
     const double c = dx * dx + dy * dy - reach * reach;
+    if (c <= 0) return 0;
     const double disc = b * b - a * c;
     if (disc < 0) return -1;
     const double t = (-b - std::sqrt(disc)) / a;
-    if (t < 0 || t > dt) return -1;
-    offset = (v.x() * dy - v.y() * dx) / std::sqrt(a);
-    return t;
+    return t < 0 || t > dt ? -1 : t;
 }
 
 struct TreeHit {

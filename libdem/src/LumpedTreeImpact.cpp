@@ -22,9 +22,10 @@ LumpedTreeImpact::Outcome LumpedTreeImpact::apply(const Vec3& v, double dbh, dou
     const double taken = eccentricityShare(eccentricity) * capacity(dbh);
     if (taken >= energy) return {Vec3::Zero(), false};
     // The energy taken comes off every component in proportion (the paper's Sect. 2.3.1); the path
-    // turns away from the stem, more for a lateral impact.
+    // turns away from the stem, more for a lateral impact. A block on the left of the stem (e > 0,
+    // left of its direction of travel) turns further left: counter-clockwise, a positive angle about z.
     const double maxTurn = (std::abs(eccentricity) <= 1.0 / 3 ? 22.5 : 60.0) * M_PI / 180;
-    const double side = eccentricity >= 0 ? -1 : 1;
+    const double side = eccentricity >= 0 ? 1 : -1;
     const double turn = side * rng.uniform(0, maxTurn);
     const Vec3 out = Eigen::AngleAxisd(turn, Vec3::UnitZ()) * v * std::sqrt(1 - taken / energy);
     return {out, true};

@@ -112,6 +112,44 @@ TEST(LumpedTreeImpact, TakesTheEnergyOfDorrenAndBerger2006) {
     EXPECT_EQ(stopped.velocity, Vec3::Zero());
 }
 
+// The path turns away from the stem: a block passing on the stem's left (e > 0, left of its direction
+// of travel, as ImpactRecorder and firstTouch sign it) turns left, one on its right turns right. The
+// turn used to go the other way, sending the block's centre through or across the trunk.
+TEST(LumpedTreeImpact, TurnsThePathAwayFromTheStem) {
+    LumpedParams p;
+    const LumpedTreeImpact impact(p);
+    sylva::SeededRandom rng(7);
+    const double mass = 1350, speed = 20;  // 270 kJ against the 20 cm stem's 39 kJ
+    for (int k = 0; k < 200; ++k)
+        for (const double e : {0.2, 0.5, -0.2, -0.5}) {
+            const Vec3 out = impact.apply(Vec3(speed, 0, 0), 0.20, e, 1.0, mass, rng).velocity;
+            ASSERT_GT(out.x(), 0);
+            ASSERT_GE(e * out.y(), 0) << "e " << e << ": turned towards the stem, vy " << out.y();
+        }
+}
+
+// A block released within reach of a stem, below its top, hits it at once: it used to be counted only
+// when entering the stem's reach, so it passed through the trunk unslowed (Dist50 as without trees).
+TEST(LumpedRun, ABlockReleasedWithinReachOfAStemHitsIt) {
+    sylva::stand::Tree tree;
+    tree.id = 1;
+    tree.x = 100.2;
+    tree.y = 100.3;
+    tree.dbhCm = 30;
+    tree.heightM = 20;
+    sylva::stand::Forest forest;
+    forest.trees.push_back(tree);
+    const Scene scene(loadScene(kNoForest, {"release.y_m=100", "release.y_min_m=100", "release.y_max_m=100",
+                                            "lumped.deviation_sd_deg=0"}),
+                      forest);
+    ASSERT_NEAR(scene.config().release.x, 100, 1e-9);  // 0.36 m from the stem's axis, within R + DBH/2 = 0.64 m
+    const RunResult r = simulateLumped(scene, 0, 3);
+    // Released without horizontal speed, it hits the stem as soon as it moves, where it landed.
+    ASSERT_EQ(r.impacts.size(), 1u);
+    EXPECT_EQ(r.impacts[0].tree, 1);
+    EXPECT_LT(r.impacts[0].energyAfter, r.impacts[0].energyBefore);
+}
+
 TEST(LumpedRun, ResultsDoNotDependOnTheNumberOfThreads) {
     const Scene scene(loadScene(kNoForest, {"release.y_min_m=80", "release.y_max_m=120"}));
     CampaignOptions o;

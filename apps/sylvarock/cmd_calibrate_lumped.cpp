@@ -1,10 +1,12 @@
 // sylvarock calibrate-lumped: fit the lumped model's roughness on the DEM's run-out without forest,
 // as the paper calibrated Rockyfor3D (Sect. 2.3.2, Table 1), and store it in the scene's [lumped].
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "Cli.hpp"
@@ -34,22 +36,47 @@ std::vector<double> readRunouts(const std::string& path) {
     return out;
 }
 
-// The scene file with its [lumped] section replaced by `section` (appended if it had none).
-void rewriteLumpedSection(const std::string& path, const std::string& section) {
+// The scene file with `keys` set in its [lumped] section (appended if it had none), under `comment`.
+// The section's other keys and comments stay: the fit was made with them, and the scene must
+// reproduce it. A former fit's comment lines (`kFitComments`) go with the keys they described.
+const char* const kFitComments[] = {"# calibrated with:", "# DEM Dist50"};
+
+void rewriteLumpedSection(const std::string& path, const std::string& comment,
+                          const std::vector<std::pair<std::string, std::string>>& keys) {
     std::ifstream in(path);
     if (!in) throw InputError(path, 0, "cannot open scene file");
+    const auto trimmed = [](const std::string& s) {
+        const auto a = s.find_first_not_of(" \t\r"), b = s.find_last_not_of(" \t\r");
+        return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
+    };
     std::ostringstream kept;
+    std::vector<std::string> others;  // the section's lines that stay
     std::string line;
     bool inLumped = false;
     while (std::getline(in, line)) {
-        const auto first = line.find_first_not_of(" \t");
-        if (first != std::string::npos && line[first] == '[') inLumped = line.compare(first, 8, "[lumped]") == 0;
-        if (!inLumped) kept << line << '\n';
+        const std::string t = trimmed(line);
+        if (!t.empty() && t[0] == '[') {
+            inLumped = t.rfind("[lumped]", 0) == 0;
+            if (inLumped) continue;
+        }
+        if (!inLumped) {
+            kept << line << '\n';
+            continue;
+        }
+        const bool fitComment = std::any_of(std::begin(kFitComments), std::end(kFitComments),
+                                            [&](const char* c) { return t.rfind(c, 0) == 0; });
+        const auto eq = t.find('=');
+        const std::string key = eq == std::string::npos ? std::string() : trimmed(t.substr(0, eq));
+        const bool replaced = std::any_of(keys.begin(), keys.end(), [&](const auto& k) { return k.first == key; });
+        if (!fitComment && !replaced) others.push_back(line);
     }
     std::string text = kept.str();
     while (text.size() > 1 && text[text.size() - 1] == '\n' && text[text.size() - 2] == '\n') text.pop_back();
+    while (!others.empty() && trimmed(others.back()).empty()) others.pop_back();
     std::ofstream out(path + ".tmp");
-    out << text << '\n' << section;
+    out << text << '\n' << "[lumped]\n" << comment;
+    for (const std::string& l : others) out << l << '\n';
+    for (const auto& [key, value] : keys) out << key << " = " << value << '\n';
     out.close();
     if (!out || std::rename((path + ".tmp").c_str(), path.c_str()) != 0)
         throw InputError(path, 0, "could not rewrite the scene file");
@@ -64,7 +91,7 @@ int runCalibrateLumped(int argc, const char* const* argv) {
         ("runs", po::value<int>()->default_value(3000), "lumped runs per trial roughness (the paper: 3 000)")
         ("seed", po::value<Seed>()->default_value(Seed{}, "1"), "seed of the DEM runs, the lumped runs and the bootstraps")
         ("threads", po::value<int>()->default_value(0), "worker threads (0: all cores); results do not depend on it")
-        ("write", po::bool_switch(), "store the fit in the scene file's [lumped] section (replacing it)");
+        ("write", po::bool_switch(), "store the fit in the scene file's [lumped] section (its roughness and soil type; the other keys stay)");
     po::variables_map vm;
     if (!parse(argc, argv, o, vm, "sylvarock calibrate-lumped --scene FILE.ini [--dem runs.csv | --dem-runs N] [--write]",
                "  sylvarock calibrate-lumped --scene data/scenes/no-forest.ini --dem-runs 1000 --write\n"
@@ -109,20 +136,23 @@ int runCalibrateLumped(int argc, const char* const* argv) {
                 fit.lumpedDist50.value - fit.demDist50.value, fit.roughness, fit.roughnessLow, fit.roughnessHigh,
                 fit.trials);
     const auto& lp = scene.config().lumped;
-    std::ostringstream section;
-    section << "[lumped]\n# calibrated with: sylvarock calibrate-lumped --scene " << scenePath
+    std::ostringstream comment, roughness;
+    comment << kFitComments[0] << " sylvarock calibrate-lumped --scene " << scenePath
             << (vm.count("dem") ? " --dem " + vm["dem"].as<std::string>() : " --dem-runs " + std::to_string(demRuns))
             << " --runs " << lumpedRuns << " --seed " << seed << " --write\n"
-            << "# DEM Dist50 " << fit.demDist50.value << " m [" << fit.demDist50.low << ", " << fit.demDist50.high
+            << kFitComments[1] << " " << fit.demDist50.value << " m [" << fit.demDist50.low << ", " << fit.demDist50.high
             << "], lumped " << fit.lumpedDist50.value << " m; spread (p90-p10) DEM " << fit.demSpread.value
-            << " m, lumped " << fit.lumpedSpread.value << " m\n"
-            << "soil_type = " << lp.soilType << "\nrg70_m = " << fit.roughness << "\nrg20_m = " << fit.roughness
-            << "\nrg10_m = " << fit.roughness << "\n";
+            << " m, lumped " << fit.lumpedSpread.value << " m\n";
+    roughness << fit.roughness;
+    const std::vector<std::pair<std::string, std::string>> keys{
+        {"soil_type", std::to_string(lp.soilType)}, {"rg70_m", roughness.str()}, {"rg20_m", roughness.str()}, {"rg10_m", roughness.str()}};
     if (vm["write"].as<bool>()) {
-        rewriteLumpedSection(scenePath, section.str());
-        std::printf("written to %s [lumped]\n", scenePath.c_str());
+        rewriteLumpedSection(scenePath, comment.str(), keys);
+        std::printf("written to %s [lumped] (its other keys kept)\n", scenePath.c_str());
     } else {
-        std::printf("\n%s(add --write to store it in %s)\n", section.str().c_str(), scenePath.c_str());
+        std::printf("\n[lumped]\n%s", comment.str().c_str());
+        for (const auto& [key, value] : keys) std::printf("%s = %s\n", key.c_str(), value.c_str());
+        std::printf("(add --write to store it in %s, its other [lumped] keys kept)\n", scenePath.c_str());
     }
     return 0;
 }

@@ -132,9 +132,9 @@ int runCalibrateLumped(int argc, const char* const* argv) {
     std::printf("lumped, roughness %.4f m (%d runs): Dist50 %.1f m [%.1f, %.1f], spread %.1f m [%.1f, %.1f]\n",
                 fit.roughness, lumpedRuns, fit.lumpedDist50.value, fit.lumpedDist50.low, fit.lumpedDist50.high,
                 fit.lumpedSpread.value, fit.lumpedSpread.low, fit.lumpedSpread.high);
-    std::printf("residual Dist50 %+.1f m; roughness %.4f m [%.4f, %.4f] over the DEM's Dist50 interval; %d trials\n",
+    std::printf("residual Dist50 %+.1f m; roughness %.4f m [%.4f, %.4f] over the DEM's Dist50 interval +- the fit's %.1f m; %d trials\n",
                 fit.lumpedDist50.value - fit.demDist50.value, fit.roughness, fit.roughnessLow, fit.roughnessHigh,
-                fit.trials);
+                opt.tolerance, fit.trials);
     const auto& lp = scene.config().lumped;
     std::ostringstream comment, roughness;
     comment << kFitComments[0] << " sylvarock calibrate-lumped --scene " << scenePath

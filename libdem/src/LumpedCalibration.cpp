@@ -66,7 +66,7 @@ LumpedCalibration calibrateLumped(const Scene& scene, const std::vector<double>&
     };
     // More roughness, shorter run-out: bisect on the logarithm of the roughness. Every trial uses the
     // same seeds, so the curve is smooth enough to bisect.
-    auto solve = [&](double target) {
+    auto solve = [&](double target, double tolerance) {
         double lo = options.roughnessLow, hi = options.roughnessHigh;
         const double atLo = median(runouts(lo)), atHi = median(runouts(hi));
         if (!(atLo >= target && target >= atHi))
@@ -77,18 +77,23 @@ LumpedCalibration calibrateLumped(const Scene& scene, const std::vector<double>&
         for (int k = 0; k < 40 && hi / lo > 1.0005; ++k) {
             const double mid = std::sqrt(lo * hi);
             const double d = median(runouts(mid));
-            if (std::abs(d - target) < options.tolerance) return mid;
+            if (std::abs(d - target) < tolerance) return mid;
             (d > target ? lo : hi) = mid;
         }
         return std::sqrt(lo * hi);
     };
-    fit.roughness = solve(fit.demDist50.value);
+    fit.roughness = solve(fit.demDist50.value, options.tolerance);
     const std::vector<double> best = runouts(fit.roughness);
     fit.lumpedDist50 = bootstrapMedian(best, options.seed);
     fit.lumpedSpread = bootstrapSpread(best, options.seed);
-    // The DEM's Dist50 is known to its interval: so is the roughness (a longer run-out, less roughness).
-    fit.roughnessHigh = solve(fit.demDist50.low);
-    fit.roughnessLow = solve(fit.demDist50.high);
+    // The DEM's Dist50 is known to its interval, and the fit to its tolerance: so is the roughness (a
+    // longer run-out, less roughness), over the interval widened by the tolerance. Its ends are found
+    // to a quarter of that width: to the fit's tolerance, the ends of a DEM interval narrower than
+    // it both stopped at the first roughness within it of the centre, a single value.
+    const double shortest = fit.demDist50.low - options.tolerance, longest = fit.demDist50.high + options.tolerance;
+    const double endTolerance = 0.25 * (longest - shortest);
+    fit.roughnessHigh = std::max(fit.roughness, solve(shortest, endTolerance));
+    fit.roughnessLow = std::min(fit.roughness, solve(longest, endTolerance));
     return fit;
 }
 

@@ -188,6 +188,24 @@ TEST(LumpedCalibration, RecoversTheRoughnessOfATarget) {
     EXPECT_GE(fit.roughnessHigh, fit.roughness);
 }
 
+// A Dist50 known to an interval narrower than the fit's tolerance (0.5 m: here the DEM's run-outs
+// evenly spread over 7 m, as tight as the paper's slope makes them) still gives a roughness known to
+// an interval, not a single value: the ends used to be found to the fit's tolerance, so both stopped
+// at the first roughness within it of the centre.
+TEST(LumpedCalibration, ANarrowDist50IntervalGivesARoughnessInterval) {
+    const Scene scene(loadScene(kNoForest));
+    std::vector<double> target;
+    for (int i = 0; i < 600; ++i) target.push_back(412 + 7.0 * i / 599);
+    LumpedCalibrationOptions c;
+    c.runs = 600;
+    c.seed = 1;
+    const auto fit = calibrateLumped(scene, target, c);
+    std::printf("DEM Dist50 %.2f [%.2f, %.2f] m: roughness %.4f [%.4f, %.4f] m\n", fit.demDist50.value, fit.demDist50.low,
+                fit.demDist50.high, fit.roughness, fit.roughnessLow, fit.roughnessHigh);
+    ASSERT_LT(fit.demDist50.high - fit.demDist50.low, 2 * c.tolerance);
+    EXPECT_LT(fit.roughnessLow, fit.roughnessHigh);
+}
+
 // One 20 cm tree 0.4 m beside a straight path (no random turn, release at y = 100 m): the paper's
 // reach R + DBH/2 = 0.49 + 0.10 m takes it in, the block's centre alone (DBH/2 = 0.1 m, Rockyfor3D's
 // code before v6.0) passes it by; a tree 5 cm off the path is hit either way.

@@ -29,7 +29,7 @@ struct LumpedCalibration {
     double roughness = 0;        // m: the fitted rg70 = rg20 = rg10
     Estimate demDist50, lumpedDist50;  // m
     Estimate demSpread, lumpedSpread;  // p90 - p10 of the run-out, m
-    double roughnessLow = 0, roughnessHigh = 0;  // the roughness that would meet the ends of the DEM's Dist50 interval
+    double roughnessLow = 0, roughnessHigh = 0;  // the roughness meeting the ends of the DEM's Dist50 interval widened by the tolerance
     int trials = 0;
 };
 

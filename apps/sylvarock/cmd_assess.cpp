@@ -92,10 +92,18 @@ int runAssess(int argc, const char* const* argv) {
     a.onRunDone = [&progress](const std::string& campaign, int done, int total) { progress.update(done, total, campaign); };
 
     const auto t0 = std::chrono::steady_clock::now();
-    const std::vector<assess::AssessmentResults> results = assess::runAssessment(a);
-    assess::writeResultsJson(a.outDir + "/results.json", results);
-    const assess::FigureSet figures = assess::writeReport(a.outDir + "/report", results);
-    if (!figures.warning.empty()) std::cerr << "sylvarock assess: warning: " << figures.warning << "\n";
+    a.writeOutputs = [&a](const std::vector<assess::AssessmentResults>& results) {
+        assess::writeResultsJson(a.outDir + "/results.json", results);
+        const assess::FigureSet figures = assess::writeReport(a.outDir + "/report", results);
+        if (!figures.warning.empty()) std::cerr << "sylvarock assess: warning: " << figures.warning << "\n";
+    };
+    std::vector<assess::AssessmentResults> results;
+    try {
+        results = assess::runAssessment(a);
+    } catch (const assess::CampaignWithoutFinishedRuns& e) {
+        std::cerr << "sylvarock assess: error: " << e.what() << "\n";
+        return kRunsFailed;
+    }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
     std::size_t failed = 0;

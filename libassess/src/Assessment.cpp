@@ -102,6 +102,7 @@ std::vector<AssessmentResults> runAssessment(const AssessmentOptions& options) {
         results.forestStartX = forestExtent(*in.bareScene).lower().x();
         all.push_back(std::move(results));
     }
+    if (options.writeOutputs) options.writeOutputs(all);
     return all;
 }
 

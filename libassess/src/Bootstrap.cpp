@@ -1,5 +1,8 @@
 #include "libassess/Bootstrap.hpp"
 
+#include <cmath>
+#include <cstdio>
+
 #include <gsl/gsl_rng.h>
 
 #include <stdexcept>
@@ -16,6 +19,12 @@ void resampleInto(const std::vector<double>& from, gsl_rng* rng, std::vector<dou
     for (std::size_t i = 0; i < from.size(); ++i) to.push_back(from[gsl_rng_uniform_int(rng, from.size())]);
 }
 }  // namespace
+
+std::string confidencePercent(double confidence) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.10g", std::round(1e4 * confidence) / 100);
+    return text;
+}
 
 Interval bootstrapProtectionIndex(const std::vector<std::vector<double>>& realisations, const std::vector<double>& baseline,
                                   const BootstrapSettings& settings) {

@@ -1,8 +1,10 @@
 #include "libassess/CampaignPlan.hpp"
 
 #include <cstdio>
+#include <map>
 
 #include "libassess/Hashing.hpp"
+#include "libcommon/InputError.hpp"
 
 namespace sylva::assess {
 
@@ -46,6 +48,18 @@ std::vector<Campaign> planCampaigns(const AssessmentDesign& design) {
                     c.id = idPrefix + design.stands[s].name + "_" + structureCode(structure) + "_" + number;
                     plan.push_back(c);
                 }
+    }
+    // Ids are names joined by "_": a stand named like another's lumped campaigns ("lumped_GR1" beside
+    // GR1 with --model both) would share its campaigns' ids, and the store its rows.
+    std::map<std::string, const Campaign*> byId;
+    for (const Campaign& c : plan) {
+        const auto [at, added] = byId.emplace(c.id, &c);
+        if (added) continue;
+        const auto name = [&](const Campaign& k) {
+            return k.forested ? "stand '" + design.stands[k.stand].name + "' (" + dem::toString(k.model) + ")"
+                              : "the " + dem::toString(k.model) + " campaign without forest";
+        };
+        throw InputError(name(*at->second) + " and " + name(c) + " give the same campaign id '" + c.id + "': rename the stand");
     }
     return plan;
 }

@@ -136,7 +136,7 @@ std::string script(const AssessmentResults& results) {
 
     gp << "# Fig. 11: PF50 per stand with its bootstrap interval\n"
        << "set terminal svg size " << std::max(500, 110 * n + 200) << ",420 dynamic noenhanced font 'sans,11'\nset output 'pf50.svg'\n"
-       << "set title 'Protection index PF50 (Eq. 26) with " << static_cast<int>(std::lround(100 * results.bootstrap.confidence))
+       << "set title 'Protection index PF50 (Eq. 26) with " << confidencePercent(results.bootstrap.confidence)
        << " % bootstrap interval'\nset xlabel 'stand'\nset ylabel 'PF50'\nset xrange [-0.6:" << n - 0.4 << "]\nset key top right\n"
        << "plot 'data/pf50_A.csv' every ::1 using ($1-0.12):3:4:5:xtic(2) with yerrorbars pt 7 lc rgb A title 'A (aggregated)', \\\n"
        << "     'data/pf50_NA.csv' every ::1 using ($1+0.12):3:4:5 with yerrorbars pt 5 lc rgb NA title 'NA (random)'\n"
@@ -220,7 +220,7 @@ std::string comparisonScript(const std::vector<AssessmentResults>& results) {
 
     gp << "# Fig. 11: PF50 per stand, both models, A and NA, with bootstrap intervals\n"
        << "set terminal svg size " << std::max(600, 150 * n + 240) << ",440 dynamic noenhanced font 'sans,11'\nset output 'pf50_models.svg'\n"
-       << "set title 'PF50 per stand with " << static_cast<int>(std::lround(100 * results[0].bootstrap.confidence))
+       << "set title 'PF50 per stand with " << confidencePercent(results[0].bootstrap.confidence)
        << " % bootstrap interval'\nset xlabel 'stand'\nset ylabel 'PF50'\nset xrange [-0.6:" << n - 0.4 << "]\nset key outside right\nplot ";
     const double offsets[2][2] = {{-0.27, -0.09}, {0.09, 0.27}};
     for (std::size_t m = 0; m < results.size(); ++m) {

@@ -25,6 +25,11 @@ std::vector<RunRecord> completeRuns(const CampaignStore& store, std::size_t c, c
             failed.push_back(campaign.id + " run " + std::to_string(run) + " (seed " + std::to_string(record.seed) + ")");
         else
             runs.push_back(record);
+    if (runs.empty())
+        throw CampaignWithoutFinishedRuns(
+            "all " + std::to_string(records.size()) + " runs of campaign " + campaign.id +
+            " stopped on a numerical error (each was reported as it failed): without a finished run it has no Dist50, "
+            "so no PF50. Remove the cause (a forced integration.dt_s, an extreme --set) and start again with another --out");
     return runs;
 }
 

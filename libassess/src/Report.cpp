@@ -43,8 +43,6 @@ std::string fixed(double v, int decimals) {
     return buf;
 }
 
-int percent(double confidence) { return static_cast<int>(std::lround(100 * confidence)); }
-
 // Mean of a statistic over a row's virtual forests (NaN values, an undefined index, are left out).
 template <class Get>
 double forestMean(const StructureAssessment& row, Get get) {
@@ -156,7 +154,7 @@ void writeMarkdown(const std::string& path, const AssessmentResults& res, const 
        << " virtual forest(s) of " << runsPerRealisation(d, res.model) << " block runs each; " << baselineRuns(d, res.model)
        << " runs without forest.\n\n"
        << "PF50 = 1 − Dist50(with forest) / Dist50(without forest) (Toe et al., Eq. 26), Dist50 the median run-out "
-       << "along the slope of the pooled runs. The interval is a " << percent(res.bootstrap.confidence)
+       << "along the slope of the pooled runs. The interval is a " << confidencePercent(res.bootstrap.confidence)
        << " % percentile bootstrap (" << res.bootstrap.replicates
        << " replicates) that resamples the forest realisations, then the runs within each, and the runs without forest, "
        << "so it carries both the forest-to-forest and the block-to-block spread.\n\n"
@@ -171,7 +169,7 @@ void writeMarkdown(const std::string& path, const AssessmentResults& res, const 
     for (auto structure : assessedStructures()) {
         const std::string code = structureCode(structure);
         md << "## " << (code == "A" ? "Aggregated forests (A)" : "Not aggregated forests (NA)") << "\n\n"
-           << "| stand | PF50 | " << percent(res.bootstrap.confidence) << " % interval | Dist50 (m) | rank PF50 | G (m²/ha) | rank G | "
+           << "| stand | PF50 | " << confidencePercent(res.bootstrap.confidence) << " % interval | Dist50 (m) | rank PF50 | G (m²/ha) | rank G | "
            << "Mean_D (cm) | N (/ha) |\n| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
         for (const auto& r : res.stands)
             if (r.structure == structure)
@@ -363,7 +361,7 @@ void writeComparisonMarkdown(const std::string& path, const ModelComparison& c, 
        << "/report.md), [" << nb << "/report.md](" << nb << "/report.md).\n\n"
        << "Without forest: Dist50 " << fixed(a.baselineDist50, 1) << " m (" << na << "), " << fixed(b.baselineDist50, 1) << " m ("
        << nb << ").\n\n"
-       << "## PF50 per stand (Fig. 11)\n\n| stand | structure | PF50 " << na << " [" << percent(a.bootstrap.confidence)
+       << "## PF50 per stand (Fig. 11)\n\n| stand | structure | PF50 " << na << " [" << confidencePercent(a.bootstrap.confidence)
        << " %] | PF50 " << nb << " | rank " << na << " | rank " << nb << " | intervals overlap |\n"
        << "| --- | --- | --- | --- | --- | --- | --- |\n";
     for (const auto& s : c.stands)

@@ -127,6 +127,41 @@ TEST_F(AssessResume, AFolderBeingWrittenIsRefusedToASecondWriter) {
     EXPECT_EQ(assess(second), 6 + 2 * 2 * 4);
 }
 
+// results.json and the report are written while the folder is still locked (the store was closed
+// before them, so a resume started meanwhile mixed its intervals into the first one's report).
+TEST_F(AssessResume, TheOutputsAreWrittenWhileTheFolderIsLocked) {
+    AssessmentOptions first = options("busy", 1);
+    bool refused = false, written = false;
+    first.writeOutputs = [&](const std::vector<AssessmentResults>& results) {
+        AssessmentOptions second = options("busy", 1);
+        second.resume = true;
+        try {
+            runAssessment(second);
+        } catch (const sylva::InputError& e) {
+            refused = std::string(e.what()).find("being written by another sylvarock assess") != std::string::npos;
+        }
+        written = !results.empty();
+    };
+    runAssessment(first);
+    EXPECT_TRUE(written);
+    EXPECT_TRUE(refused) << "a resume was let in while the outputs were being written";
+}
+
+// A campaign all of whose runs failed has no Dist50: the assessment says which, instead of failing
+// in the bootstrap ("a realisation without runs") or, for the bare slope, with "Dist50 without forest
+// must be positive". A forced step far above the block's stable one on the soil fails every run.
+TEST_F(AssessResume, ACampaignWhoseRunsAllFailedIsNamed) {
+    AssessmentOptions o = options("failing", 2);
+    o.design.sceneOverrides = {"integration.dt_s=1e-2"};
+    try {
+        runAssessment(o);
+        FAIL() << "an assessment without a finished forested run gave results";
+    } catch (const CampaignWithoutFinishedRuns& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("all 6 runs of campaign baseline stopped on a numerical error"), std::string::npos) << what;
+    }
+}
+
 // Issue 13: a forest summary edited on disk (Clark-Evans 0.5895 -> 0.5) went into results.json.
 // Its checksum now tells it from the campaign's: --resume computes it again (the forest is its
 // seed's) and the results are those of the untouched campaign.

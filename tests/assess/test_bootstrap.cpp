@@ -107,3 +107,12 @@ TEST(Bootstrap, RefusesEmptySamples) {
 }
 
 }  // namespace
+
+// The report's label: a 99.5 % interval is not "100 %", a 97.5 % one not "98 %".
+TEST(Bootstrap, TheConfidenceIsPrintedAsGiven) {
+    EXPECT_EQ(sylva::assess::confidencePercent(0.95), "95");
+    EXPECT_EQ(sylva::assess::confidencePercent(0.995), "99.5");
+    EXPECT_EQ(sylva::assess::confidencePercent(0.975), "97.5");
+    EXPECT_EQ(sylva::assess::confidencePercent(0.9999), "99.99");
+}
+

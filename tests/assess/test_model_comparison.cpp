@@ -133,3 +133,25 @@ TEST(ModelComparison, EachModelGivesItsResultsAloneInATwoModelAssessment) {
 }
 
 }  // namespace
+
+// Campaign ids join names with "_": a stand named "lumped_GR1" beside GR1, both models, would share
+// ids with GR1's lumped campaigns (and the store failed on "UNIQUE constraint failed"). Refused up
+// front, naming both.
+TEST(ModelComparison, StandsWhoseCampaignIdsClashAreRefusedByName) {
+    AssessmentDesign both = shortCampaign("unused", 3, 1, 4, 7).design;
+    both.models = {Model::Dem, Model::Lumped};
+    StandSource clash = both.stands[0];
+    clash.name = "lumped_" + clash.name;
+    both.stands.push_back(clash);
+    try {
+        planCampaigns(both);
+        FAIL() << "two campaigns with one id were planned";
+    } catch (const sylva::InputError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("stand 'lumped_GR1' (dem) and stand 'GR1' (lumped) give the same campaign id 'lumped_GR1_A_001'"),
+                  std::string::npos) << what;
+    }
+    both.models = {Model::Dem};
+    EXPECT_NO_THROW(planCampaigns(both));
+}
+

@@ -18,6 +18,9 @@ struct AssessmentOptions {
     double confidence = 0.95;
     std::function<void(const std::string&)> onNote;  // warnings and what is being done, one line each
     std::function<void(const std::string& campaign, int done, int total)> onRunDone;
+    // Writes what the results give (results.json, the report) while the campaign's folder is still
+    // locked: another process resuming it waits for none of it and must not interleave its own.
+    std::function<void(const std::vector<AssessmentResults>&)> writeOutputs;
 };
 
 // One result per model of the design, in its order. InputError for unusable inputs (stands, scene,

@@ -13,6 +13,7 @@
 // own spread is counted (K - 1)/K times: conservative when blocks dominate the uncertainty, a little
 // narrow when forests do and K is small (Davison and Hinkley 1997, Sect. 3.8). docs: docs/assessment.md.
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace sylva::assess {
@@ -22,6 +23,9 @@ struct BootstrapSettings {
     double confidence = 0.95;
     std::uint64_t seed = 1;  // seeds GSL's mt19937: the same seed and data give the same interval
 };
+
+// The confidence as a percentage for people: 95, 97.5, 99.5 (to 0.01 %; never rounded up to 100).
+std::string confidencePercent(double confidence);
 
 struct Interval {
     double low = 0, high = 0;

@@ -4,6 +4,7 @@
 // PF50 and by basal area (Fig. 11), and the correlation of PF50 with G, Mean_D and N (Fig. 12).
 // Everything is computed from the stored runs, in run order, so a resumed campaign gives exactly the
 // numbers of an uninterrupted one.
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,11 @@
 #include "libassess/ForestSummary.hpp"
 
 namespace sylva::assess {
+
+// Every run of a campaign stopped on a numerical error: it has no Dist50, so its stand no PF50.
+struct CampaignWithoutFinishedRuns : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
 
 struct StructureAssessment {
     std::string name;  // the stand's

@@ -1,14 +1,9 @@
 #include "libassess/CampaignStore.hpp"
 
-#include <fcntl.h>
-#include <sys/file.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstring>
 #include <filesystem>
 #include <sstream>
 
+#include "FolderLock.hpp"
 #include "SqliteDatabase.hpp"
 #include "libdem/Campaign.hpp"
 #include "libcommon/InputError.hpp"
@@ -67,7 +62,7 @@ CampaignStore::CampaignStore(std::string dir, const AssessmentDesign& design, co
     : dir_(std::move(dir)), plan_(plan), runs_(plan.size()), forests_(plan.size()) {
     if (fs::exists(dir_) && !fs::is_directory(dir_)) throw InputError("--out " + dir_ + ": exists and is not a directory");
     fs::create_directories(dir_);
-    lockFolder();
+    lock_ = std::make_unique<FolderLock>(dir_, "assess");
     const bool otherFiles = holdsOtherFiles(dir_);
     const bool hasStore = fs::exists(path());
     if (!hasStore && otherFiles) {
@@ -97,25 +92,11 @@ CampaignStore::CampaignStore(std::string dir, const AssessmentDesign& design, co
 CampaignStore::~CampaignStore() {
     insertRun_.reset();  // statements are finalised before their database closes
     insertForest_.reset();
-    db_.reset();         // closes the database (checkpointing its log) before the lock goes
-    if (lock_ >= 0) ::close(lock_);  // releases the lock
+    db_.reset();  // closes the database (checkpointing its log) before the lock goes
+    lock_.reset();
 }
 
 std::string CampaignStore::path() const { return (fs::path(dir_) / kFileName).string(); }
-
-void CampaignStore::lockFolder() {
-    lock_ = ::open(dir_.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (lock_ < 0) throw InputError("--out " + dir_ + ": cannot open the folder: " + std::strerror(errno));
-    if (::flock(lock_, LOCK_EX | LOCK_NB) != 0) {
-        const int error = errno;
-        ::close(lock_);
-        lock_ = -1;
-        if (error == EWOULDBLOCK)
-            throw InputError("--out " + dir_ + " is being written by another sylvarock assess (it holds the folder's lock): "
-                             "wait for it to end, or stop it, before resuming; two writers would mix their runs");
-        throw InputError("--out " + dir_ + ": cannot lock the folder: " + std::strerror(error));
-    }
-}
 
 // Schema, design and plan in one transaction: a kill before its commit leaves a store without a
 // campaign, which the next assess starts afresh.

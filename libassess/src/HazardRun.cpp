@@ -13,6 +13,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "FolderLock.hpp"
 #include "GdalSupport.hpp"
 #include "HazardStore.hpp"
 #include "RunOutcome.hpp"
@@ -366,6 +367,7 @@ HazardResults runHazard(const HazardOptions& o) {
     if (o.model == dem::Model::Dem)
         for (std::size_t k = 0; k < blocks.classes(); ++k) dem::BlockMotion::refuseSoilTooSoft(blocks.scene(k));
     prepareOutDir(o.outDir, o.resume);
+    const FolderLock lock(o.outDir, "hazard");  // until the last output is written
     const std::string storePath = o.outDir + "/hazard.sqlite";
     const stand::Forest& trees = scene.forest();
     const std::unique_ptr<HazardStore> store =

@@ -6,6 +6,7 @@
 #include <sqlite3.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -465,6 +466,25 @@ TEST_F(Hazard, CheckLinesTrajectoriesAndVtkFollowTheBlocks) {
 
 // An interrupted map (here: runs cut out of its store, as a kill between two batches leaves it)
 // resumes with only the runs it lacks and ends with every output of the uninterrupted map.
+// One writer per folder, as for assess: a resume started while the map is being made (its first run
+// done) is refused instead of running the same runs and writing the same rasters beside it.
+TEST_F(Hazard, AFolderBeingWrittenIsRefusedToASecondWriter) {
+    HazardOptions o = smallSlope();
+    o.compareBare = false;
+    o.outDir = (dir_ / "busy").string();
+    std::atomic<bool> tried{false};
+    std::string second;
+    o.onRunDone = [&](const std::string&, int, int) {
+        if (tried.exchange(true)) return;
+        HazardOptions resume = o;
+        resume.onRunDone = nullptr;
+        resume.resume = true;
+        second = errorOf([&] { runHazard(resume); });
+    };
+    runHazard(o);
+    EXPECT_NE(second.find("is being written by another sylvarock hazard"), std::string::npos) << second;
+}
+
 TEST_F(Hazard, ResumedMapRunsWhatItLacksAndEqualsTheWholeMap) {
     HazardOptions o = smallSlope();
     o.checkLinesPath = write("lines.geojson", R"({"type": "FeatureCollection", "features": [

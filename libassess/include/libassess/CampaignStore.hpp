@@ -23,6 +23,8 @@ namespace sylva::assess {
 class SqliteDatabase;
 class SqliteStatement;
 
+class FolderLock;
+
 class CampaignStore {
 public:
     static constexpr int kSchemaVersion = 2;  // PRAGMA user_version of campaign.sqlite (2: campaigns.model)
@@ -58,7 +60,6 @@ public:
     void note(std::string text) { notes_.push_back(std::move(text)); }
 
 private:
-    void lockFolder();
     void create(const AssessmentDesign& design);
     void checkStored(const AssessmentDesign& design);
     void loadRuns();
@@ -66,7 +67,7 @@ private:
     SqliteStatement& statement(std::unique_ptr<SqliteStatement>& slot, const char* sql);
     void insertForest(const std::string& campaign, const ForestSummary& summary);
     std::string dir_;
-    int lock_ = -1;  // the folder's file descriptor, holding its lock
+    std::unique_ptr<FolderLock> lock_;
     bool resumed_ = false;
     std::vector<Campaign> plan_;
     std::unique_ptr<SqliteDatabase> db_;

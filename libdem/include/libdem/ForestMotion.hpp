@@ -163,7 +163,7 @@ private:
     ContactSet<StemStemTouch> stemTouches_;
     ContactSet<StemSoilTouch> soilTouches_;
     ImpactRecorder impacts_;
-    std::vector<std::uint32_t> nearTrees_, nearSoil_, toWake_;
+    std::vector<std::uint32_t> nearTrees_, nearSoil_;
     std::vector<Eigen::AlignedBox3d> boxes_;  // per awake stem (listStemPairs)
     std::vector<std::size_t> nearA_, nearB_;  // a pair's connections inside the other stem's box (listStemPairs)
     std::vector<ConnectionPair> stemPairs_;

@@ -81,7 +81,8 @@ StandPcf standPairCorrelation(const stand::Inventory& inv, const po::variables_m
         }
     }
     const long nr = vm["pcf-nr"].as<long>();
-    if (nr < 2) throw InputError("--pcf-nr: need at least 2 values of r");
+    // Each value of r holds a few numbers per estimator: a million is far finer than any plot resolves.
+    if (nr < 2 || nr > 1000000) throw InputError("--pcf-nr " + std::to_string(nr) + ": give 2 to 1 000 000 values of r");
     s.nr = static_cast<std::size_t>(nr);
     if (vm.count("pcf-exact")) s.options.kernelSum = stand::KernelSum::Exact;
     s.g = stand::pooledPairCorrelation(s.plots, s.rmax, s.nr, s.options);

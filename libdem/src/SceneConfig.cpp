@@ -170,8 +170,8 @@ SceneKeys::SceneKeys(StemParameterSet set) : parameterSet(name(set)) {
     k.number("integration.stem_safety", i.stemSafety, aboveUpTo(0, 1, ""), "time step as a fraction of the awake stems' stable limit");
     k.number("integration.dt_s", i.forcedDt, closed(0, 1, "s"), "force this time step (0: automatic); refused if unstable");
     k.other("integration.anticipated_contacts", i.anticipatedContacts, "new contacts the step must stay stable for (1 to 1000)");
-    k.number("integration.energy_tolerance", i.energyTolerance, aboveUpTo(0, 100, "(fraction)", "", "a percentage typed as a fraction? 0.5 is 50 %"), "relative energy growth that stops a run");
-    k.number("integration.energy_warning", i.energyWarning, aboveUpTo(0, 100, "(fraction)", "", "a percentage typed as a fraction? 0.05 is 5 %"), "relative energy imbalance above which a run is flagged (runs.csv energy_flag, summary.json energy_flagged_runs)");
+    k.number("integration.energy_tolerance", i.energyTolerance, aboveUpTo(0, 1, "(fraction)", "", "a percentage typed as a fraction? 0.5 is 50 %"), "relative energy growth that stops a run");
+    k.number("integration.energy_warning", i.energyWarning, aboveUpTo(0, 1, "(fraction)", "", "a percentage typed as a fraction? 0.05 is 5 %"), "relative energy imbalance above which a run is flagged (runs.csv energy_flag, summary.json energy_flagged_runs)");
     k.number("stop.rest_distance_m", st.restDistance, aboveUpTo(0, 100, "m"), "the block rests once its centre stays within this distance of one point ...");
     k.number("stop.rest_time_s", st.restTime, aboveUpTo(0, 3600, "s"), "... for this long");
     k.number("stop.max_time_s", st.maxTime, aboveUpTo(0, 1e5, "s"), "simulated time limit");
@@ -201,7 +201,7 @@ SceneKeys::SceneKeys(StemParameterSet set) : parameterSet(name(set)) {
     k.number("tree_contact.eb_pa", tc.blockModulus, modulus, "E_b (Eq. 22)");
     k.number("tree_contact.kappa_block_stem", tc.kappaBlockStem, ratio, "kappa_b-t");
     k.number("tree_contact.friction_block_stem_deg", tc.frictionBlockStemDeg, friction, "phi_b-t");
-    k.number("tree_contact.crushing_strength_pa", tc.crushingStrength, closed(0, 1e9, "Pa", "", "MPa typed as Pa?"),
+    k.number("tree_contact.crushing_strength_pa", tc.crushingStrength, closed(0, 1e9, "Pa"),
              "wood's compression strength across the grain: the stem crushes under the block (0: the paper's elastic contact)");
     k.number("tree_contact.kappa_stem_stem", tc.kappaStemStem, ratio, "kappa_t-t");
     k.number("tree_contact.friction_stem_stem_deg", tc.frictionStemStemDeg, friction, "phi_t-t");
@@ -264,18 +264,20 @@ void checkRanges(const KeyTable& k, const po::variables_map& vm, const std::set<
     }
 }
 
+// Keys without a section (gravity_m_s2) come first: after another key's [section] line they
+// would be read as that section's.
 std::string overridesAsIni(const std::vector<std::string>& overrides) {
-    std::string ini;
+    std::string top, sections;
     for (const auto& o : overrides) {
         const auto eq = o.find('=');
         if (eq == std::string::npos || eq == 0)
             throw InputError("--set '" + o + "': expected section.key=value");
         const std::string key = o.substr(0, eq);
         const auto dot = key.rfind('.');
-        if (dot == std::string::npos) ini += key + "=" + o.substr(eq + 1) + "\n";
-        else ini += "[" + key.substr(0, dot) + "]\n" + key.substr(dot + 1) + "=" + o.substr(eq + 1) + "\n";
+        if (dot == std::string::npos) top += key + "=" + o.substr(eq + 1) + "\n";
+        else sections += "[" + key.substr(0, dot) + "]\n" + key.substr(dot + 1) + "=" + o.substr(eq + 1) + "\n";
     }
-    return ini;
+    return top + sections;
 }
 
 // The scene file's text, a UTF-8 byte-order mark (which some editors write) removed.
@@ -388,6 +390,29 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
     if (c.release.yMax < c.release.yMin) throw InputError("release.y_max_m is below release.y_min_m");
     if (vm.count("soil.restitution")) c.soilContact.dampingRatio = dampingRatioFromRestitution(keys.restitution);
     if (c.block.shape == BlockShapeKind::Cube && vm.count("block.d1_m")) c.block.volumeM3 = c.block.d1 * c.block.d1 * c.block.d1;
+    // The clump's spheres have a quarter of the shortest edge (Eq. 1), so their number grows with the
+    // square of the edges' ratio: 20 x 20 x 0.001 m would take 2e10 spheres. Platy rocks reach edge
+    // ratios of about 5 (Ringenbach et al. 2023's platy blocks); 10 allows 4 600 spheres.
+    if (c.block.shape == BlockShapeKind::Cuboid && c.block.d1 > 0 && c.block.d2 > 0 && c.block.d3 > 0) {
+        const double ratio = std::max({c.block.d1, c.block.d2, c.block.d3}) / std::min({c.block.d1, c.block.d2, c.block.d3});
+        if (ratio > 10)
+            throw InputError(path ? *path : std::string(), path ? lineOf(*path, "block.d3_m") : 0,
+                             "block.d1_m, d2_m, d3_m: the longest edge is " + text(ratio) +
+                                 " times the shortest, above 10 (the clump's spheres are a quarter of the shortest edge, "
+                                 "Eq. 1, so their number grows with the ratio squared): a slab that thin is not a block");
+    }
+    // The soil's random rows are drawn by a generator that keeps 32 bits of its seed: 2^32 + 1 would
+    // draw seed 1's bed, and -1, read as 2^64 - 1, seed 2^32 - 1's.
+    if (c.terrain.soil.seed > 0xFFFFFFFFull)
+        throw InputError(path ? *path : std::string(), path ? lineOf(*path, "terrain.seed") : 0,
+                         "terrain.seed = " + std::to_string(c.terrain.soil.seed) +
+                             " is outside 0 to 4294967295 (the generator keeps 32 bits; a negative seed reads as a huge one)");
+    // Wood crushes across the grain at a few MPa (3.7e6 Pa, docs/model-stems.md, "Crushing"): a value
+    // in Pa this small is one in MPa, and would let the block crush through any stem.
+    if (c.stemContact.crushingStrength > 0 && c.stemContact.crushingStrength < 1e5)
+        throw InputError(path ? *path : std::string(), path ? lineOf(*path, "tree_contact.crushing_strength_pa") : 0,
+                         "tree_contact.crushing_strength_pa = " + text(c.stemContact.crushingStrength) +
+                             " Pa is below 1e5 Pa: MPa typed as Pa? (3.7 MPa is 3.7e6; 0 turns crushing off)");
     if (c.integration.anticipatedContacts < 1 || c.integration.anticipatedContacts > 1000)
         throw InputError("integration.anticipated_contacts = " + text(c.integration.anticipatedContacts) + ": outside [1, 1000]");
     if (c.lumped.soilType < 0 || c.lumped.soilType > 7)

@@ -201,3 +201,29 @@ TEST(SceneConfigParser, ARefusedValueInAFileNamesItsLine) {
         EXPECT_EQ(std::string(e.what()).rfind("--set block.density_kg_m3 = 1", 0), 0u) << e.what();
     }
 }
+
+// Values a unit slip makes plausible-looking, refused by name (they were accepted: a crushing strength
+// of 3.7 Pa let the block through the tree, a warning level of 5 meant 500 %, a seed of -1 drew
+// seed 2^32 - 1's soil, a 20 x 20 x 0.001 m slab asked for 2e10 clump spheres and std::bad_alloc).
+TEST(SceneConfigParser, UnitSlipsAreRefusedByName) {
+    EXPECT_NE(refusal({"tree_contact.crushing_strength_pa=3.7"}).find("MPa typed as Pa?"), std::string::npos);
+    EXPECT_EQ(refusal({"tree_contact.crushing_strength_pa=0"}), "");  // crushing off
+    EXPECT_EQ(refusal({"tree_contact.crushing_strength_pa=3.7e6"}), "");
+    EXPECT_NE(refusal({"integration.energy_warning=5"}).find("integration.energy_warning"), std::string::npos);
+    EXPECT_NE(refusal({"integration.energy_tolerance=10"}).find("integration.energy_tolerance"), std::string::npos);
+    EXPECT_NE(refusal({"terrain.seed=-1"}).find("terrain.seed"), std::string::npos);
+    EXPECT_NE(refusal({"terrain.seed=4294967296"}).find("outside 0 to 4294967295"), std::string::npos);
+    EXPECT_EQ(refusal({"terrain.seed=4294967295"}), "");
+    const std::vector<std::string> slab{"block.shape=cuboid", "block.d1_m=20", "block.d2_m=20", "block.d3_m=0.001"};
+    EXPECT_NE(refusal(slab).find("the longest edge is 20000 times the shortest"), std::string::npos) << refusal(slab);
+    EXPECT_EQ(refusal({"block.shape=cuboid", "block.d1_m=2", "block.d2_m=1", "block.d3_m=0.5"}), "");
+}
+
+// A key without a section after a sectioned one was read into that section ("unrecognised option
+// 'block.gravity_m_s2'"), so --block sphere or --forest F (which add --set keys) broke --set gravity_m_s2.
+TEST(SceneConfigParser, AKeyWithoutASectionIsReadWhateverComesBefore) {
+    const SceneConfig c = sceneFromOverrides({"block.shape=sphere", "gravity_m_s2=5", "soil.kappa=0.05"});
+    EXPECT_DOUBLE_EQ(c.gravity, 5);
+    EXPECT_DOUBLE_EQ(c.soilContact.kappa, 0.05);
+}
+

@@ -90,8 +90,13 @@ TEST(ForestReader, RejectsBadRowsWithTheirLine) {
     expectRejected("bad_stool.csv", "x,y,dbh_cm,stool\n1,2,20,A7\n", 2, "column 'stool'");
     expectRejected("fields.csv", "x,y,dbh_cm\n1,2,20\n1,2\n", 3, "expected 3 fields");
     expectRejected("crown.csv", "x,y,dbh_cm,height_m,crown_length_m\n1,2,20,10,11\n", 2, "crown length");
-    expectRejected("height.csv", "x,y,dbh_cm,height_m\n1,2,20,-1\n", 2, "height must be positive");
+    expectRejected("height.csv", "x,y,dbh_cm,height_m\n1,2,20,-1\n", 2, "height must lie above the breast height 1.3 m");
+    // A stem no taller than breast height cannot be built: it used to be refused only when a block
+    // first reached it, so for some seeds, without the file or the line. 2000 is a height in cm.
+    expectRejected("short.csv", "x,y,dbh_cm,height_m\n1,2,20,20\n3,4,30,1.0\n", 3, "height must lie above the breast height 1.3 m");
+    expectRejected("cm.csv", "x,y,dbh_cm,height_m\n1,2,20,2000\n", 2, "got 2000 (cm typed as m?)");
     expectRejected("mass.csv", "x,y,dbh_cm,crown_mass_kg\n1,2,20,-5\n", 2, "crown mass");
+    expectRejected("heavy.csv", "x,y,dbh_cm,crown_mass_kg\n1,2,20,1e15\n", 2, "crown mass must lie in [0, 100 000] kg");
     expectRejected("nan.csv", "x,y,dbh_cm\n1,nan,20\n", 2, "not a finite number");
     // Issue 13: DBH typed in mm gave G = 3 273 m2/ha without a word; a line repeated 2 001 times
     // ran for minutes with 2 001 stems inside one another.

@@ -182,3 +182,12 @@ TEST(StatsCli, InconsistentOptionsExit2) {
 }
 
 }  // namespace
+
+// Two billion values of r asked for 16 GB and ended in std::bad_alloc: refused with the option's name.
+TEST(StatsCli, AnAbsurdNumberOfRValuesIsRefused) {
+    const CliRun r = stats("--points " + td::spatstatDir() + "spruces_points.csv --window 0,0,56,38 --pcf-nr 2000000000 "
+                           "--pcf-out " + ::testing::TempDir() + "/stats_cli_pcf_huge.csv");
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_NE(r.err.find("--pcf-nr 2000000000: give 2 to 1 000 000 values of r"), std::string::npos) << r.err;
+}
+

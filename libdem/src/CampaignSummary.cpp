@@ -112,6 +112,10 @@ void writeImpactsCsv(const std::string& path, const std::vector<RunResult>& runs
 void writeImpactEnergyJson(const std::string& path, const RunResult& r) {
     const ForestLedger& f = r.forestEnergy;
     Json j;
+    // A run stopped on a numerical error has no impact to report: said first, so that a sweep does
+    // not read its zeros as a block that missed the tree.
+    j["run_failed"] = r.reason == StopReason::Failed;
+    if (r.reason == StopReason::Failed) j["failure"] = r.failure;
     j["impacts"] = r.impacts.size();
     if (!r.impacts.empty()) {
         const TreeImpact& i = r.impacts.front();

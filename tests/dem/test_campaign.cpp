@@ -194,6 +194,19 @@ TEST(SimulateCli, FailedRunsGiveTheirOwnExitStatusAndRows) {
     EXPECT_NE(slurp((out / "summary.json").string()).find("\"failed_runs\": 2"), std::string::npos);
 }
 
+// A single-tree run that failed used to write an energy.json of zeros, "impacts": 0 and
+// "stem_broken": false, which a sweep over DBH and speed reads as a block that missed the tree.
+TEST(SimulateCli, AFailedSingleTreeRunSaysSoInItsEnergyFile) {
+    const auto out = std::filesystem::temp_directory_path() / "sylvarock-tests" / "single-tree-failed";
+    std::filesystem::remove_all(out);
+    const int status = cli(std::string("simulate --scene ") + SYLVAROCK_DATA +
+                           "/scenes/single-tree.ini --set integration.dt_s=0.05 --no-figures --out " + out.string());
+    EXPECT_EQ(WEXITSTATUS(status), 3);
+    const std::string energy = slurp((out / "energy.json").string());
+    EXPECT_NE(energy.find("\"run_failed\": true"), std::string::npos) << energy;
+    EXPECT_NE(energy.find("\"failure\": \"integration.dt_s"), std::string::npos) << energy;
+}
+
 // Validation (short form; SYLVAROCK_LONG_VALIDATION=1 runs 300 blocks): without forest, the stand-in
 // slope and Table 2 give the paper's Sect. 3.2: most blocks stop between 325 and 375 m along the
 // slope, energy lines between 25 and 32 deg, bounces mostly under 1 m, speeds of 10-15 m/s.

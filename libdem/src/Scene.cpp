@@ -23,7 +23,14 @@ stand::Forest singleTree(const SingleTreeConfig& t) {
 }
 
 stand::Forest chooseForest(const SceneConfig& c, stand::Forest given) {
-    if (c.tree.enabled) return singleTree(c.tree);
+    if (c.tree.enabled) {
+        // A forest given as well would be dropped without a word (and assess or hazard would run
+        // their forests as this one tree).
+        if (!c.forestFile.empty() || !given.trees.empty())
+            throw InputError(c.sourceFile, 0, "the scene places a single tree ([tree]): a forest (forest.file, --forest, "
+                                              "--stand, --trees) does not apply to it; use a scene without [tree] for a forest");
+        return singleTree(c.tree);
+    }
     if (!c.forestFile.empty()) {
         stand::Forest f = stand::readForestCsv(c.forestFile);
         // Run as bare ground, a header-only file would pass for a forest that stopped nothing.

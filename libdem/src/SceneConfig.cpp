@@ -34,6 +34,7 @@ struct Range {
     const char* unit;
     const char* tooLow = "";   // likely cause of a value below the range
     const char* tooHigh = "";  // ... above it
+    bool infinityMeansNever = false;  // +inf is accepted: the key's "never"
 };
 Range closed(double lo, double hi, const char* unit, const char* tooLow = "", const char* tooHigh = "") {
     return {lo, hi, false, false, unit, tooLow, tooHigh};
@@ -49,6 +50,7 @@ std::string describe(const Range& r) {
 }
 
 bool inside(const Range& r, double v) {
+    if (r.infinityMeansNever && v == std::numeric_limits<double>::infinity()) return true;
     return std::isfinite(v) && (r.loOpen ? v > r.lo : v >= r.lo) && (r.hiOpen ? v < r.hi : v <= r.hi);
 }
 
@@ -195,7 +197,9 @@ SceneKeys::SceneKeys(StemParameterSet set) : parameterSet(name(set)) {
     k.number("stem.root_yield_moment_nm", stem.root.yieldMoment, aboveUpTo(0, 1e9, "N m", "", "N mm typed as N m?"), "M_a, for stem.anchorage = fixed");
     k.other("stem.anchorage", anchorage, "fixed (the paper: M_a and K_Root for every tree) | stem_weight (M_a = C_reg x stem mass, winching tests; docs/model-stems.md)");
     k.number("stem.root_turning_moment_nm_per_kg", stem.root.turningMomentPerKg, aboveUpTo(0, 1e4, "N m/kg"), "C_reg, for stem.anchorage = stem_weight");
-    k.number("stem.root_failure_rotation_deg", rootFailureDeg, aboveUpTo(0, 180, "deg"),
+    Range rootFailure = aboveUpTo(0, 180, "deg");
+    rootFailure.infinityMeansNever = true;  // documented, and the only way to keep the paper's plateau in the calibrated set
+    k.number("stem.root_failure_rotation_deg", rootFailureDeg, rootFailure,
              "rotation of the foot at which the root plate lets go (inf: never, the paper's plateau at M_a)");
     k.number("tree_contact.er_pa", tc.woodRadialModulus, modulus, "E_r (Eqs. 22-23)");
     k.number("tree_contact.eb_pa", tc.blockModulus, modulus, "E_b (Eq. 22)");
@@ -257,7 +261,7 @@ void checkRanges(const KeyTable& k, const po::variables_map& vm, const std::set<
         std::string what = n.name + " = " + text(v) + ": ";
         what += std::isfinite(v) ? "outside " : "not a finite number; it must lie in ";
         what += describe(n.range);
-        const char* hint = !std::isfinite(v) ? "" : v < n.range.lo ? n.range.tooLow : n.range.tooHigh;
+        const char* hint = !std::isfinite(v) ? "" : v <= n.range.lo ? n.range.tooLow : n.range.tooHigh;
         if (*hint) what += std::string(" (") + hint + ")";
         if (fromSet.count(n.name) || !path) throw InputError("--set " + what);
         throw InputError(*path, lineOf(*path, n.name), what);

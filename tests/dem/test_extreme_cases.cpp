@@ -414,6 +414,13 @@ TEST(ExtremeRelease, StemAtTheReleasePointIsRefusedNamingTheStem) {
     EXPECT_NO_THROW(BlockMotion(clear, drawRelease(clear, 1)));
 }
 
+// The single-tree scene has its tree: a forest given as well was dropped without a word.
+TEST(ExtremeRelease, AForestGivenToTheSingleTreeSceneIsRefused) {
+    const std::string m = messageOf<sylva::InputError>(
+        [] { Scene(singleTree({"forest.file=" + forestCsv("beside-the-single-tree", "5,10,25\n")})); });
+    EXPECT_TRUE(mentions(m, "the scene places a single tree")) << m;
+}
+
 TEST(ExtremeTimeStep, ForcedStepAboveTheStableOneIsRefusedWithItsLimit) {
     // On the ground, the block/soil springs' limit is ~1e-2 s.
     std::string m = messageOf<SimulationError>([] { run(flatGround({"integration.dt_s=0.05"})); });

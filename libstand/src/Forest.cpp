@@ -76,18 +76,20 @@ Forest readForestCsv(const std::string& path) {
         if (cStool && !t.text(r, *cStool).empty()) tree.stool = t.integer(r, *cStool);
 
         // Computed allometry always passes the checks below, so only a value read from the file can fail.
-        tree.heightM = optionalNumber(t, r, cHeight).value_or(treeHeightM(tree.dbhCm));
+        const std::optional<double> height = optionalNumber(t, r, cHeight);
+        tree.heightM = height.value_or(treeHeightM(tree.dbhCm));
         // Above the breast height, where the DBH was measured, and below the tallest trees known
         // (Sequoia sempervirens, 116 m): 2000 is a height in cm, and would be stepped as a 2 km stem.
-        if (!(tree.heightM > 1.3) || tree.heightM > 150)
+        if (height && (!(tree.heightM > 1.3) || tree.heightM > 150))
             t.fail(r, *cHeight, "height must lie above the breast height 1.3 m and at most 150 m, got " + t.text(r, *cHeight) +
                                     (tree.heightM > 150 ? " (cm typed as m?)" : ""));
         tree.crownLengthM = optionalNumber(t, r, cCrownLength).value_or(crownLengthM(tree.heightM));
         if (tree.crownLengthM < 0 || tree.crownLengthM > tree.heightM)
             t.fail(r, *cCrownLength, "crown length must lie in [0, height_m], got " + t.text(r, *cCrownLength));
-        tree.crownMassKg = optionalNumber(t, r, cCrownMass).value_or(crownMassKg(tree.dbhCm));
+        const std::optional<double> crownMass = optionalNumber(t, r, cCrownMass);
+        tree.crownMassKg = crownMass.value_or(crownMassKg(tree.dbhCm));
         // A large broadleaf crown weighs a few tonnes; 100 t bounds any (and a stem under 1e15 kg cannot move).
-        if (!(tree.crownMassKg >= 0) || tree.crownMassKg > 1e5)
+        if (crownMass && (!(tree.crownMassKg >= 0) || tree.crownMassKg > 1e5))
             t.fail(r, *cCrownMass, "crown mass must lie in [0, 100 000] kg, got " + t.text(r, *cCrownMass));
         forest.trees.push_back(std::move(tree));
     }

@@ -97,6 +97,11 @@ TEST(ForestReader, RejectsBadRowsWithTheirLine) {
     expectRejected("cm.csv", "x,y,dbh_cm,height_m\n1,2,20,2000\n", 2, "got 2000 (cm typed as m?)");
     expectRejected("mass.csv", "x,y,dbh_cm,crown_mass_kg\n1,2,20,-5\n", 2, "crown mass");
     expectRejected("heavy.csv", "x,y,dbh_cm,crown_mass_kg\n1,2,20,1e15\n", 2, "crown mass must lie in [0, 100 000] kg");
+    // Only a height read from the file is checked: the allometry's for a vanishing DBH is 1.3 m to
+    // rounding, and the file has no height column to name.
+    const std::string tiny = ::testing::TempDir() + "/tiny_dbh.csv";
+    std::ofstream(tiny) << "x,y,dbh_cm\n1,2,1e-300\n";
+    EXPECT_NO_THROW(readForestCsv(tiny));
     expectRejected("nan.csv", "x,y,dbh_cm\n1,nan,20\n", 2, "not a finite number");
     // Issue 13: DBH typed in mm gave G = 3 273 m2/ha without a word; a line repeated 2 001 times
     // ran for minutes with 2 001 stems inside one another.

@@ -395,8 +395,8 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
     if (vm.count("soil.restitution")) c.soilContact.dampingRatio = dampingRatioFromRestitution(keys.restitution);
     if (c.block.shape == BlockShapeKind::Cube && vm.count("block.d1_m")) c.block.volumeM3 = c.block.d1 * c.block.d1 * c.block.d1;
     // The clump's spheres have a quarter of the shortest edge (Eq. 1), so their number grows with the
-    // square of the edges' ratio: 20 x 20 x 0.001 m would take 2e10 spheres. Platy rocks reach edge
-    // ratios of about 5 (Ringenbach et al. 2023's platy blocks); 10 allows 4 600 spheres.
+    // square of the edges' ratio: 20 x 20 x 0.001 m would take 2e10 spheres. A ratio of 10 still
+    // allows 4 600 spheres (a cube has 27); a limit of cost, not a measured bound on rock shapes.
     if (c.block.shape == BlockShapeKind::Cuboid && c.block.d1 > 0 && c.block.d2 > 0 && c.block.d3 > 0) {
         const double ratio = std::max({c.block.d1, c.block.d2, c.block.d3}) / std::min({c.block.d1, c.block.d2, c.block.d3});
         if (ratio > 10)

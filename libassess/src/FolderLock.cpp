@@ -19,8 +19,8 @@ FolderLock::FolderLock(const std::string& dir, const std::string& command) {
     ::close(descriptor_);
     if (error == EWOULDBLOCK)
         throw InputError("--out " + dir + " is being written by another sylvarock " + command +
-                         " (it holds the folder's lock): wait for it to end, or stop it, before resuming; two writers "
-                         "would mix their runs");
+                         " (it holds the folder's lock): wait for it to end, or stop it, before writing there again (a "
+                         "new run or a resume); two writers would mix their runs");
     throw InputError("--out " + dir + ": cannot lock the folder: " + std::strerror(error));
 }
 

@@ -1,9 +1,11 @@
 #include "libdem/SceneConfig.hpp"
 
 #include <boost/program_options.hpp>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <iterator>
 #include <limits>
 #include <set>
@@ -387,6 +389,40 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
         throw InputError("lumped.tree_reach must be block or centre, not '" + treeReach + "'");
     c.lumped.treeReach = treeReach == "block" ? TreeReach::Block : TreeReach::Centre;
     c.stem.root.failureRotation = keys.rootFailureDeg * std::acos(-1.0) / 180;
+    // A key the scene's other choices leave unread is refused, not ignored: stem.tau_s under wood's
+    // loss factor would change nothing, and the tree would look insensitive to it. A key read from
+    // the file is let pass when --set changed the choice it belonged to (the file's keys go with its
+    // choices).
+    const auto requireRead = [&](const std::string& key, bool read, std::initializer_list<const char*> choices,
+                                 const std::string& why) {
+        const auto it = vm.find(key);
+        if (read || it == vm.end() || it->second.defaulted()) return;
+        const bool typed = fromSet.count(key) > 0;
+        if (!typed && std::any_of(choices.begin(), choices.end(), [&](const char* k) { return fromSet.count(k) > 0; })) return;
+        const std::string what = key + " is not read here: " + why;
+        if (typed || !path) throw InputError("--set " + what);
+        throw InputError(*path, lineOf(*path, key), what);
+    };
+    const std::string shapeName = toString(c.block.shape);
+    requireRead("block.d1_m", c.block.shape != BlockShapeKind::Sphere, {"block.shape"},
+                "a sphere's size is block.volume_m3");
+    for (const char* edge : {"block.d2_m", "block.d3_m"})
+        requireRead(edge, c.block.shape == BlockShapeKind::Cuboid, {"block.shape"},
+                    "a " + shapeName + "'s size is block.volume_m3" + (c.block.shape == BlockShapeKind::Cube ? " or its edge block.d1_m" : "") +
+                        "; three edges make a block.shape = cuboid");
+    requireRead("block.volume_m3", c.block.shape != BlockShapeKind::Cuboid, {"block.shape"},
+                "a cuboid's volume is block.d1_m x d2_m x d3_m");
+    const std::string dampingSource = "stem.damping = " + damping + (vm["stem.damping"].defaulted() ? " (stem.parameters = " + c.stemParameters + ")" : "");
+    requireRead("stem.tau_s", c.stem.bending.damping == StemDamping::Viscous, {"stem.damping", "stem.parameters"},
+                "it is the viscous damping's (Eqs. 7-8), and " + dampingSource + "; set stem.damping = viscous with it");
+    requireRead("stem.loss_factor", c.stem.bending.damping == StemDamping::ConstantLoss, {"stem.damping", "stem.parameters"},
+                "it is the constant-loss damping's, and " + dampingSource + "; set stem.damping = constant_loss with it");
+    requireRead("stem.root_turning_moment_nm_per_kg", c.stem.root.anchorage == RootAnchorage::StemWeight,
+                {"stem.anchorage", "stem.parameters"},
+                "C_reg sets M_a under stem.anchorage = stem_weight, and this scene's anchorage is fixed (M_a is "
+                "stem.root_yield_moment_nm)");
+    requireRead("soil.damping_ratio", !vm.count("soil.restitution"), {"soil.restitution"},
+                "soil.restitution is given too and sets the damping; give one of the two");
     validate(c.stem);
     c.release.yRangeGiven = vm.count("release.y_min_m") || vm.count("release.y_max_m");
     if (!vm.count("release.y_min_m")) c.release.yMin = c.release.y;

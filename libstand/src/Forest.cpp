@@ -78,8 +78,9 @@ Forest readForestCsv(const std::string& path) {
         // Computed allometry always passes the checks below, so only a value read from the file can fail.
         const std::optional<double> height = optionalNumber(t, r, cHeight);
         tree.heightM = height.value_or(treeHeightM(tree.dbhCm));
-        // Above the breast height, where the DBH was measured, and below the tallest trees known
-        // (Sequoia sempervirens, 116 m): 2000 is a height in cm, and would be stepped as a 2 km stem.
+        // Above the breast height, where the DBH was measured, and below the tallest trees known (coast
+        // redwoods of 112.7 m, and a hydraulic limit of 122-130 m: Koch et al. 2004, Nature 428: 851-854):
+        // 2000 is a height in cm, and would be stepped as a 2 km stem.
         if (height && (!(tree.heightM > 1.3) || tree.heightM > 150))
             t.fail(r, *cHeight, "height must lie above the breast height 1.3 m and at most 150 m, got " + t.text(r, *cHeight) +
                                     (tree.heightM > 150 ? " (cm typed as m?)" : ""));
@@ -88,7 +89,8 @@ Forest readForestCsv(const std::string& path) {
             t.fail(r, *cCrownLength, "crown length must lie in [0, height_m], got " + t.text(r, *cCrownLength));
         const std::optional<double> crownMass = optionalNumber(t, r, cCrownMass);
         tree.crownMassKg = crownMass.value_or(crownMassKg(tree.dbhCm));
-        // A large broadleaf crown weighs a few tonnes; 100 t bounds any (and a stem under 1e15 kg cannot move).
+        // 100 t is above Eq. 13's crown (Bartelink 1997) at the largest DBH read, 200 cm (58 t); more is
+        // a unit slip (grams as kg), under which the stem could not move.
         if (crownMass && (!(tree.crownMassKg >= 0) || tree.crownMassKg > 1e5))
             t.fail(r, *cCrownMass, "crown mass must lie in [0, 100 000] kg, got " + t.text(r, *cCrownMass));
         forest.trees.push_back(std::move(tree));

@@ -235,3 +235,38 @@ TEST(SceneConfigParser, AKeyWithoutASectionIsReadWhateverComesBefore) {
     EXPECT_DOUBLE_EQ(c.soilContact.kappa, 0.05);
 }
 
+
+// A key the scene's other choices leave unread was ignored without a word: under the calibrated
+// stems (wood's loss factor, anchorage from the stem's weight) --set stem.tau_s changed nothing, nor
+// did block.d1_m on a sphere. It is refused naming what it needs; a file's key is let pass when
+// --set changed the choice it went with.
+TEST(SceneConfigParser, AKeyTheSceneDoesNotReadIsRefusedNotIgnored) {
+    const std::string tau = refusal({"stem.tau_s=0.01"});
+    EXPECT_EQ(tau.rfind("--set stem.tau_s is not read here", 0), 0u) << tau;
+    EXPECT_NE(tau.find("stem.damping = constant_loss (stem.parameters = calibrated)"), std::string::npos) << tau;
+    EXPECT_EQ(refusal({"stem.tau_s=0.01", "stem.damping=viscous"}), "");
+    EXPECT_EQ(refusal({"stem.tau_s=0.01", "stem.parameters=toe2018"}), "");
+    EXPECT_NE(refusal({"stem.loss_factor=0.01", "stem.parameters=toe2018"}).find("stem.loss_factor is not read"), std::string::npos);
+    EXPECT_NE(refusal({"stem.root_turning_moment_nm_per_kg=100", "stem.anchorage=fixed"}).find("anchorage is fixed"),
+              std::string::npos);
+    EXPECT_NE(refusal({"block.shape=sphere", "block.d1_m=1"}).find("a sphere's size is block.volume_m3"), std::string::npos);
+    EXPECT_NE(refusal({"block.d2_m=1"}).find("a cube's size is block.volume_m3 or its edge block.d1_m"), std::string::npos);
+    EXPECT_EQ(refusal({"block.d1_m=1"}), "");  // a cube's edge
+    EXPECT_NE(refusal({"block.shape=cuboid", "block.d1_m=1", "block.d2_m=1", "block.d3_m=0.5", "block.volume_m3=2"})
+                  .find("a cuboid's volume is block.d1_m x d2_m x d3_m"),
+              std::string::npos);
+    EXPECT_NE(refusal({"soil.restitution=0.3", "soil.damping_ratio=0.5"}).find("give one of the two"), std::string::npos);
+
+    // In a file: named by its line, unless --set changed the choice it belonged to.
+    const std::string path =
+        writeScene("unread.ini", "[soil]\ndamping_ratio = 0.5\n[block]\nshape = cuboid\nd1_m = 1\nd2_m = 1\nd3_m = 0.5\nvolume_m3 = 2\n");
+    try {
+        loadScene(path);
+        FAIL() << "a cuboid with a volume accepted";
+    } catch (const sylva::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("unread.ini:8: block.volume_m3 is not read here"), std::string::npos) << e.what();
+    }
+    EXPECT_NO_THROW(loadScene(path, {"block.shape=sphere"})) << "the file's edges went with its cuboid";
+    EXPECT_NO_THROW(loadScene(path, {"block.volume_m3=1", "block.shape=cube", "block.d1_m=1", "soil.restitution=0.4"}))
+        << "the file's d2_m, d3_m went with its cuboid, its damping ratio with no restitution";
+}

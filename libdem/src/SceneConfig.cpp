@@ -253,7 +253,14 @@ long lineOf(const std::string& path, const std::string& key) {
     return 0;
 }
 
-// Each number given (not defaulted) must lie in its range; `fromSet` are the keys given by --set.
+// A refusal of `key` names where it was given: on --set (`fromSet`), or at its line of the file.
+InputError keyError(const std::string& key, const std::string& what, const std::set<std::string>& fromSet,
+                    const std::string* path) {
+    if (fromSet.count(key) || !path) return InputError("--set " + what);
+    return InputError(*path, lineOf(*path, key), what);
+}
+
+// Each number given (not defaulted) must lie in its range.
 void checkRanges(const KeyTable& k, const po::variables_map& vm, const std::set<std::string>& fromSet,
                  const std::string* path) {
     for (const NumericKey& n : k.numbers()) {
@@ -265,8 +272,7 @@ void checkRanges(const KeyTable& k, const po::variables_map& vm, const std::set<
         what += describe(n.range);
         const char* hint = !std::isfinite(v) ? "" : v <= n.range.lo ? n.range.tooLow : n.range.tooHigh;
         if (*hint) what += std::string(" (") + hint + ")";
-        if (fromSet.count(n.name) || !path) throw InputError("--set " + what);
-        throw InputError(*path, lineOf(*path, n.name), what);
+        throw keyError(n.name, what, fromSet, path);
     }
 }
 
@@ -369,24 +375,29 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
     }
     po::notify(vm);
     checkRanges(keys.table, vm, fromSet, path);
-    c.block.shape = parseBlockShape(shape);
+    const auto refuse = [&](const std::string& key, const std::string& what) { return keyError(key, what, fromSet, path); };
+    try {
+        c.block.shape = parseBlockShape(shape);
+    } catch (const InputError& e) {
+        throw refuse("block.shape", std::string("block.shape: ") + e.what());
+    }
     if (orientation != "random" && orientation != "fixed")
-        throw InputError("release.orientation must be random or fixed, not '" + orientation + "'");
+        throw refuse("release.orientation", "release.orientation must be random or fixed, not '" + orientation + "'");
     c.release.randomOrientation = orientation == "random";
     c.launch.enabled = vm.count("block.speed_m_s") > 0;
     c.tree.enabled = vm.count("tree.dbh_cm") > 0;
-    if (c.launch.enabled && !c.tree.enabled) throw InputError("block.speed_m_s launches the block at a tree: set tree.dbh_cm too");
+    if (c.launch.enabled && !c.tree.enabled) throw refuse("block.speed_m_s", "block.speed_m_s launches the block at a tree: set tree.dbh_cm too");
     if (reading != "isotropic" && reading != "per_axis")
-        throw InputError("stem.bending_reading must be isotropic or per_axis, not '" + reading + "'");
+        throw refuse("stem.bending_reading", "stem.bending_reading must be isotropic or per_axis, not '" + reading + "'");
     c.stem.bending.reading = reading == "isotropic" ? BendingReading::Isotropic : BendingReading::PerAxis;
     if (damping != "viscous" && damping != "constant_loss")
-        throw InputError("stem.damping must be viscous or constant_loss, not '" + damping + "'");
+        throw refuse("stem.damping", "stem.damping must be viscous or constant_loss, not '" + damping + "'");
     c.stem.bending.damping = damping == "viscous" ? StemDamping::Viscous : StemDamping::ConstantLoss;
     if (anchorage != "fixed" && anchorage != "stem_weight")
-        throw InputError("stem.anchorage must be fixed or stem_weight, not '" + anchorage + "'");
+        throw refuse("stem.anchorage", "stem.anchorage must be fixed or stem_weight, not '" + anchorage + "'");
     c.stem.root.anchorage = anchorage == "fixed" ? RootAnchorage::Fixed : RootAnchorage::StemWeight;
     if (treeReach != "block" && treeReach != "centre")
-        throw InputError("lumped.tree_reach must be block or centre, not '" + treeReach + "'");
+        throw refuse("lumped.tree_reach", "lumped.tree_reach must be block or centre, not '" + treeReach + "'");
     c.lumped.treeReach = treeReach == "block" ? TreeReach::Block : TreeReach::Centre;
     c.stem.root.failureRotation = keys.rootFailureDeg * std::acos(-1.0) / 180;
     // A key the scene's other choices leave unread is refused, not ignored: stem.tau_s under wood's
@@ -397,11 +408,8 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
                                  const std::string& why) {
         const auto it = vm.find(key);
         if (read || it == vm.end() || it->second.defaulted()) return;
-        const bool typed = fromSet.count(key) > 0;
-        if (!typed && std::any_of(choices.begin(), choices.end(), [&](const char* k) { return fromSet.count(k) > 0; })) return;
-        const std::string what = key + " is not read here: " + why;
-        if (typed || !path) throw InputError("--set " + what);
-        throw InputError(*path, lineOf(*path, key), what);
+        if (!fromSet.count(key) && std::any_of(choices.begin(), choices.end(), [&](const char* k) { return fromSet.count(k) > 0; })) return;
+        throw refuse(key, key + " is not read here: " + why);
     };
     const std::string shapeName = toString(c.block.shape);
     requireRead("block.d1_m", c.block.shape != BlockShapeKind::Sphere, {"block.shape"},
@@ -427,7 +435,9 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
     c.release.yRangeGiven = vm.count("release.y_min_m") || vm.count("release.y_max_m");
     if (!vm.count("release.y_min_m")) c.release.yMin = c.release.y;
     if (!vm.count("release.y_max_m")) c.release.yMax = c.release.y;
-    if (c.release.yMax < c.release.yMin) throw InputError("release.y_max_m is below release.y_min_m");
+    if (c.release.yMax < c.release.yMin)
+        throw refuse(vm.count("release.y_max_m") ? "release.y_max_m" : "release.y_min_m",
+                     "release.y_max_m = " + text(c.release.yMax) + " is below release.y_min_m = " + text(c.release.yMin));
     if (vm.count("soil.restitution")) c.soilContact.dampingRatio = dampingRatioFromRestitution(keys.restitution);
     if (c.block.shape == BlockShapeKind::Cube && vm.count("block.d1_m")) c.block.volumeM3 = c.block.d1 * c.block.d1 * c.block.d1;
     // The clump's spheres have a quarter of the shortest edge (Eq. 1), so their number grows with the
@@ -436,27 +446,24 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
     if (c.block.shape == BlockShapeKind::Cuboid && c.block.d1 > 0 && c.block.d2 > 0 && c.block.d3 > 0) {
         const double ratio = std::max({c.block.d1, c.block.d2, c.block.d3}) / std::min({c.block.d1, c.block.d2, c.block.d3});
         if (ratio > 10)
-            throw InputError(path ? *path : std::string(), path ? lineOf(*path, "block.d3_m") : 0,
-                             "block.d1_m, d2_m, d3_m: the longest edge is " + text(ratio) +
+            throw refuse("block.d3_m", "block.d1_m, d2_m, d3_m: the longest edge is " + text(ratio) +
                                  " times the shortest, above 10 (the clump's spheres are a quarter of the shortest edge, "
                                  "Eq. 1, so their number grows with the ratio squared): a slab that thin is not a block");
     }
     // The soil's random rows are drawn by a generator that keeps 32 bits of its seed: 2^32 + 1 would
     // draw seed 1's bed, and -1, read as 2^64 - 1, seed 2^32 - 1's.
     if (c.terrain.soil.seed > 0xFFFFFFFFull)
-        throw InputError(path ? *path : std::string(), path ? lineOf(*path, "terrain.seed") : 0,
-                         "terrain.seed = " + std::to_string(c.terrain.soil.seed) +
+        throw refuse("terrain.seed", "terrain.seed = " + std::to_string(c.terrain.soil.seed) +
                              " is outside 0 to 4294967295 (the generator keeps 32 bits; a negative seed reads as a huge one)");
     // Wood crushes across the grain at a few MPa (3.7e6 Pa, docs/model-stems.md, "Crushing"): a value
     // in Pa this small is one in MPa, and would let the block crush through any stem.
     if (c.stemContact.crushingStrength > 0 && c.stemContact.crushingStrength < 1e5)
-        throw InputError(path ? *path : std::string(), path ? lineOf(*path, "tree_contact.crushing_strength_pa") : 0,
-                         "tree_contact.crushing_strength_pa = " + text(c.stemContact.crushingStrength) +
+        throw refuse("tree_contact.crushing_strength_pa", "tree_contact.crushing_strength_pa = " + text(c.stemContact.crushingStrength) +
                              " Pa is below 1e5 Pa: MPa typed as Pa? (3.7 MPa is 3.7e6; 0 turns crushing off)");
     if (c.integration.anticipatedContacts < 1 || c.integration.anticipatedContacts > 1000)
-        throw InputError("integration.anticipated_contacts = " + text(c.integration.anticipatedContacts) + ": outside [1, 1000]");
+        throw refuse("integration.anticipated_contacts", "integration.anticipated_contacts = " + text(c.integration.anticipatedContacts) + ": outside [1, 1000]");
     if (c.lumped.soilType < 0 || c.lumped.soilType > 7)
-        throw InputError("lumped.soil_type = " + text(c.lumped.soilType) + ": Rockyfor3D soil types are 0 to 7 (docs/lumped.md)");
+        throw refuse("lumped.soil_type", "lumped.soil_type = " + text(c.lumped.soilType) + ": Rockyfor3D soil types are 0 to 7 (docs/lumped.md)");
     // Terrain paths are relative to the scene file.
     if (path) {
         const auto dir = std::filesystem::path(*path).parent_path();

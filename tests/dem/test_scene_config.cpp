@@ -270,3 +270,34 @@ TEST(SceneConfigParser, AKeyTheSceneDoesNotReadIsRefusedNotIgnored) {
     EXPECT_NO_THROW(loadScene(path, {"block.volume_m3=1", "block.shape=cube", "block.d1_m=1", "soil.restitution=0.4"}))
         << "the file's d2_m, d3_m went with its cuboid, its damping ratio with no restitution";
 }
+
+// Refusals that look at a key's text or at two keys named neither the file's line nor --set, and
+// those that did name a line blamed the file for a value typed on --set ("scene.ini: terrain.seed").
+TEST(SceneConfigParser, EveryRefusalNamesWhereItsKeyWasGiven) {
+    const std::string path = writeScene("where.ini", "[block]\nshape = cube\n[release]\ny_min_m = 50\ny_max_m = 40\n");
+    const auto refusalOf = [&](const std::vector<std::string>& set) {
+        try {
+            loadScene(path, set);
+        } catch (const sylva::InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_NE(refusalOf({}).find("where.ini:5: release.y_max_m = 40 is below release.y_min_m = 50"), std::string::npos) << refusalOf({});
+    const std::vector<std::string> fine{"release.y_max_m=60"};
+    EXPECT_EQ(refusalOf(fine), "");
+    for (const std::string& bad : {"terrain.seed=-1", "stem.damping=soft", "block.shape=pyramid", "release.orientation=up",
+                                   "lumped.soil_type=9", "tree_contact.crushing_strength_pa=3.7"}) {
+        std::vector<std::string> set = fine;
+        set.push_back(bad);
+        const std::string what = refusalOf(set);
+        EXPECT_EQ(what.rfind("--set " + bad.substr(0, bad.find('=')), 0), 0u) << bad << ": " << what;
+    }
+    const std::string shape = writeScene("shape.ini", "# a block\n[block]\nshape = pyramid\n");
+    try {
+        loadScene(shape);
+        FAIL() << "a pyramid accepted";
+    } catch (const sylva::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("shape.ini:3: block.shape"), std::string::npos) << e.what();
+    }
+}

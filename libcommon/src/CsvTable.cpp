@@ -61,7 +61,10 @@ CsvTable CsvTable::read(const std::string& path) {
 CsvTable CsvTable::parse(const std::string& text, const std::string& sourceName) {
     CsvTable t;
     t.source_ = sourceName;
-    std::istringstream in(text);
+    // A UTF-8 byte-order mark from a spreadsheet export goes before anything is read: left on the first
+    // line it hid a comment's '#' and made the comment the header.
+    const bool marked = text.rfind("\xEF\xBB\xBF", 0) == 0;
+    std::istringstream in(marked ? text.substr(3) : text);
     std::string line;
     long lineNo = 0;
     bool haveHeader = false;
@@ -70,8 +73,6 @@ CsvTable CsvTable::parse(const std::string& text, const std::string& sourceName)
         if (blank(line) || line[0] == '#') continue;
         auto cells = splitLine(line);
         if (!haveHeader) {
-            if (lineNo == 1 && cells[0].size() >= 3 && cells[0].compare(0, 3, "\xEF\xBB\xBF") == 0)
-                cells[0] = cells[0].substr(3);  // UTF-8 byte-order mark from spreadsheet exports
             for (std::size_t i = 0; i < cells.size(); ++i) {
                 if (cells[i].empty()) throw InputError(sourceName, lineNo, "empty column name in header");
                 for (std::size_t j = 0; j < i; ++j)

@@ -110,6 +110,8 @@ ElevationGrid ElevationGrid::readAsc(const std::string& path) {
     long lineNo = 0;
     while (std::getline(in, line)) {
         ++lineNo;
+        // A UTF-8 byte-order mark (some editors write one) would hide the first header key.
+        if (lineNo == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
         const auto t = tokens(line);
         if (t.empty()) continue;
         const bool inHeader = g.ncols_ == 0;

@@ -68,6 +68,16 @@ TEST(ElevationGridReader, CentreHeaderGivesTheSameGrid) {
         for (double y = 200; y <= 220; y += 2.5) EXPECT_EQ(a.height(x, y), b.height(x, y)) << x << "," << y;
 }
 
+// A byte-order mark before "ncols" made the reader take the header's first line for values ("the
+// header ends without 'cellsize'" on a valid grid).
+TEST(ElevationGridReader, AByteOrderMarkIsDropped) {
+    const ElevationGrid a = ElevationGrid::readAsc(kDir + "grid_small.asc");
+    const ElevationGrid b = ElevationGrid::readAsc(kDir + "grid_small_bom.asc");
+    EXPECT_EQ(b.columns(), a.columns());
+    EXPECT_EQ(b.xmin(), a.xmin());
+    EXPECT_EQ(b.height(115, 205), a.height(115, 205));
+}
+
 TEST(ElevationGridReader, UnknownHeaderKeyNamesItsLine) { expectError("grid_unknown_key.asc", 5, "'cellsiz'"); }
 
 TEST(ElevationGridReader, MissingHeaderKeyNamesWhereTheHeaderEnds) {

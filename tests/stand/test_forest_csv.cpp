@@ -77,6 +77,16 @@ TEST(ForestReader, PlainTreeFileGetsIdsAndAllometry) {
     EXPECT_DOUBLE_EQ(f.trees[1].crownMassKg, crownMassKg(30));
 }
 
+// A spreadsheet's byte-order mark before a comment line hid the '#': the comment became the header
+// ("missing column 'x'"). It is dropped before any line is read, with or without a comment.
+TEST(ForestReader, AByteOrderMarkBeforeACommentOrTheHeaderIsDropped) {
+    for (const char* text : {"\xEF\xBB\xBF# trees of plot 3\nx,y,dbh_cm\n1,2,20\n", "\xEF\xBB\xBFx,y,dbh_cm\n1,2,20\n"}) {
+        const Forest f = readForestCsv(writeText("bom_trees.csv", text));
+        ASSERT_EQ(f.trees.size(), 1u) << text;
+        EXPECT_DOUBLE_EQ(f.trees[0].x, 1);
+    }
+}
+
 TEST(ForestReader, GivenHeightSetsTheCrownLength) {
     const Forest f = readForestCsv(writeText("height_only.csv", "x,y,dbh_cm,height_m\n0,0,20,10\n"));
     EXPECT_NEAR(f.trees[0].crownLengthM, 4.0642, 1e-12);  // Eq. 12: 0.40642 * 10 m

@@ -8,7 +8,7 @@ starts from the same release). Per setting: runs the energy audit stopped, media
 its ratio to the default's (percentile bootstrap over the runs), total CPU, the paired run-out
 error against the reference (|run-out - reference's run-out| run by run: chaos makes it large at
 every setting, which is why the table's verdict rests on the distributions), Dist50, PF50 with its
-interval (scripts/pf50_from_runs.py, Eq. 24 against BARE), PF50's difference from the reference
+interval (scripts/pf50_from_runs.py, Eq. 26 against BARE), PF50's difference from the reference
 and from the default with theirs, and the share of the trees' energy left vibrating.
 """
 import argparse, csv, json, os, random, statistics, sys

@@ -3,7 +3,7 @@
 
     python3 scripts/pf50_from_runs.py BARE_DIR FOREST_DIR [FOREST_DIR ...] [--replicates 2000] [--seed 1]
 
-PF50 = 1 - Dist50(forest) / Dist50(no forest) (the paper's Eq. 24), Dist50 the median run-out
+PF50 = 1 - Dist50(forest) / Dist50(no forest) (the paper's Eq. 26), Dist50 the median run-out
 (runs.csv `runout_m`). The interval resamples the runs of both folders; with two or more forest
 folders the difference of each from the first is given too, resampled the same way. Runs that
 failed (no run-out) are left out and counted. `assess` does this for whole campaigns; this is for

@@ -9,6 +9,9 @@ import sys
 
 res = json.load(open(sys.argv[1]))
 if len(sys.argv) > 2 and sys.argv[2] != res.get("model", "dem"):
+    if sys.argv[2] not in res:
+        sys.exit(f"{sys.argv[1]} holds no {sys.argv[2]} results: its campaign ran the {res.get('model', 'dem')} model "
+                 f"(`assess --model both` runs the two side by side)")
     res = res[sys.argv[2]]
 rows = res["stands"]
 names = sorted({r["name"] for r in rows})

@@ -85,20 +85,27 @@ Json stopReasonsJson(const std::vector<RunRecord>& runs) {
     return j;
 }
 
+// An undefined value (a p-value under three stands, an index without stems) is an empty field, which
+// spreadsheets and pandas read as missing; "nan" is text to some readers and a number to others.
+struct Field {
+    double value;
+};
+std::ostream& operator<<(std::ostream& out, Field f) { return std::isfinite(f.value) ? out << f.value : out; }
+
 void writeTables(const std::string& dir, const AssessmentResults& res) {
     auto stands = create(dir + "/stands.csv");
     stands << "stand,structure,pf50,pf50_low,pf50_high,dist50_m,realisations,runs_per_realisation,rank_pf50,rank_basal_area,"
               "stems_per_ha,basal_area_m2_ha,mean_dbh_cm,sd_dbh_cm,clark_evans,virtual_basal_area_m2_ha,virtual_mean_dbh_cm,"
               "virtual_sd_dbh_cm,virtual_clark_evans\n";
     for (const auto& r : res.stands)
-        stands << r.name << ',' << structureCode(r.structure) << ',' << r.pf50 << ',' << r.pf50Ci.low << ',' << r.pf50Ci.high << ','
-               << r.dist50 << ',' << r.runs.size() << ',' << runsPerRealisation(res.design, res.model) << ',' << r.rankPf50 << ',' << r.rankBasalArea << ','
-               << r.inventory.stemsPerHa << ',' << r.inventory.basalAreaM2Ha << ',' << r.inventory.meanDbhCm << ','
-               << r.inventory.sdDbhCm << ',' << r.inventory.clarkEvans << ','
-               << forestMean(r, [](const ForestSummary& f) { return f.basalAreaM2Ha; }) << ','
-               << forestMean(r, [](const ForestSummary& f) { return f.meanDbhCm; }) << ','
-               << forestMean(r, [](const ForestSummary& f) { return f.sdDbhCm; }) << ','
-               << forestMean(r, [](const ForestSummary& f) { return f.clarkEvans; }) << '\n';
+        stands << r.name << ',' << structureCode(r.structure) << ',' << Field{r.pf50} << ',' << Field{r.pf50Ci.low} << ',' << Field{r.pf50Ci.high} << ','
+               << Field{r.dist50} << ',' << r.runs.size() << ',' << runsPerRealisation(res.design, res.model) << ',' << r.rankPf50 << ',' << r.rankBasalArea << ','
+               << Field{r.inventory.stemsPerHa} << ',' << Field{r.inventory.basalAreaM2Ha} << ',' << Field{r.inventory.meanDbhCm} << ','
+               << Field{r.inventory.sdDbhCm} << ',' << Field{r.inventory.clarkEvans} << ','
+               << Field{forestMean(r, [](const ForestSummary& f) { return f.basalAreaM2Ha; })} << ','
+               << Field{forestMean(r, [](const ForestSummary& f) { return f.meanDbhCm; })} << ','
+               << Field{forestMean(r, [](const ForestSummary& f) { return f.sdDbhCm; })} << ','
+               << Field{forestMean(r, [](const ForestSummary& f) { return f.clarkEvans; })} << '\n';
     auto forests = create(dir + "/forests.csv");
     forests << "stand,structure,realisation,stems,stems_per_ha,basal_area_m2_ha,mean_dbh_cm,sd_dbh_cm,clark_evans,dist50_m,pf50\n";
     for (const auto& r : res.stands)
@@ -106,21 +113,21 @@ void writeTables(const std::string& dir, const AssessmentResults& res) {
             const auto& f = r.forests[k];
             std::vector<double> runout;
             for (const auto& run : r.runs[k]) runout.push_back(run.runoutM);
-            forests << r.name << ',' << structureCode(r.structure) << ',' << k + 1 << ',' << f.stems << ',' << f.stemsPerHa << ','
-                    << f.basalAreaM2Ha << ',' << f.meanDbhCm << ',' << f.sdDbhCm << ',' << f.clarkEvans << ','
-                    << dem::quantile(runout, 0.5) << ',' << r.pf50PerRealisation[k] << '\n';
+            forests << r.name << ',' << structureCode(r.structure) << ',' << k + 1 << ',' << f.stems << ',' << Field{f.stemsPerHa} << ','
+                    << Field{f.basalAreaM2Ha} << ',' << Field{f.meanDbhCm} << ',' << Field{f.sdDbhCm} << ',' << Field{f.clarkEvans} << ','
+                    << Field{dem::quantile(runout, 0.5)} << ',' << Field{r.pf50PerRealisation[k]} << '\n';
         }
     auto corr = create(dir + "/correlations.csv");
     corr << "structure,stands,pearson_pf50_basal_area,pearson_pf50_mean_dbh,pearson_pf50_stems_per_ha,p_pf50_basal_area,p_pf50_mean_dbh,"
             "p_pf50_stems_per_ha\n";
     for (const auto& c : res.correlations)
-        corr << structureCode(c.structure) << ',' << c.stands << ',' << c.basalArea << ',' << c.meanDbh << ',' << c.stemsPerHa << ','
-             << c.pBasalArea << ',' << c.pMeanDbh << ',' << c.pStemsPerHa << '\n';
+        corr << structureCode(c.structure) << ',' << c.stands << ',' << Field{c.basalArea} << ',' << Field{c.meanDbh} << ',' << Field{c.stemsPerHa} << ','
+             << Field{c.pBasalArea} << ',' << Field{c.pMeanDbh} << ',' << Field{c.pStemsPerHa} << '\n';
     auto runs = create(dir + "/runs.csv");
     runs << "stand,structure,realisation,run,seed,runout_m,runout_horizontal_m,stop_x_m,stop_y_m,tree_impacts,reason\n";
     const auto row = [&runs](const std::string& stand, const std::string& structure, std::size_t k, const RunRecord& r) {
-        runs << stand << ',' << structure << ',' << k << ',' << r.run << ',' << r.seed << ',' << r.runoutM << ',' << r.runoutHorizontalM
-             << ',' << r.stopX << ',' << r.stopY << ',' << r.treeImpacts << ',' << r.reason << '\n';
+        runs << stand << ',' << structure << ',' << k << ',' << r.run << ',' << r.seed << ',' << Field{r.runoutM} << ',' << Field{r.runoutHorizontalM}
+             << ',' << Field{r.stopX} << ',' << Field{r.stopY} << ',' << r.treeImpacts << ',' << r.reason << '\n';
     };
     for (const auto& r : res.baseline) row("none", "", 0, r);
     for (const auto& s : res.stands)

@@ -79,6 +79,10 @@ TEST_F(AssessCli, SmallCampaignWritesResultsAndReport) {
     EXPECT_NE(report.find("| GR1 |"), std::string::npos) << report;
     for (const char* table : {"stands.csv", "forests.csv", "correlations.csv", "runs.csv"})
         EXPECT_TRUE(fs::exists(root_ / "out/report" / table)) << table;
+    // One stand has no correlation: its fields are empty, as results.json's nulls, not "nan".
+    const std::string correlations = slurp(root_ / "out/report/correlations.csv");
+    EXPECT_EQ(correlations.find("nan"), std::string::npos) << correlations;
+    EXPECT_NE(correlations.find("\nA,1,,,,,,\n"), std::string::npos) << correlations;
     // The figures need gnuplot (a declared dependency); without it the report says why they are missing.
     if (std::system("gnuplot --version > /dev/null 2>&1") == 0) {
         for (const char* svg : {"runout_cdf.svg", "pf50.svg", "pf50_dendrometry.svg", "stop_map.svg"}) {

@@ -21,11 +21,11 @@ RootSpring::RootSpring(const RootSpringParams& p, BendingReading reading)
 double RootSpring::rotate(const Eigen::Vector3d& dTheta) {
     if (failed_) return 0;
     twistAngle_ += dTheta.z();
-    const double yieldMoment = bending_.coefficients().yieldMoment;
+    tilt_ += dTheta.head<2>();
     const double dissipated = bending_.rotate(dTheta.head<2>()).dissipated;
-    // On the perfectly plastic plateau the plastic work is M_a times the plastic rotation.
-    plasticRotation_ += dissipated / yieldMoment;
-    if (plasticRotation_ == 0 || yieldMoment / stiffness_ + plasticRotation_ < failureRotation_) return dissipated;
+    // The foot's tilt, not the plastic rotation summed over its swings: a foot rocking on the plateau
+    // back and forth would otherwise let go without ever leaning as far as the failure rotation.
+    if (tilt_.norm() < failureRotation_) return dissipated;
     const double released = storedEnergy();
     failed_ = true;
     bending_.snap();

@@ -93,3 +93,29 @@ TEST(RootSpring, PlateLetsGoAtTheFailureRotation) {
     EXPECT_NEAR(work, expected, p.yieldMoment * d);
     EXPECT_EQ(root.rotate(Eigen::Vector3d(0, -0.1, 0)), 0.0);  // nothing left to unload
 }
+
+// The failure rotation is the foot's tilt. It used to be M_a / K_Root plus the plastic rotation
+// summed over every swing, so a foot rocking on the plateau between -2 and +2 degrees let go at a
+// "failure rotation" of 5 degrees it never reached, and a plate could not let go below its yield
+// rotation (a failure rotation of 1 degree acted at 1.53).
+TEST(RootSpring, ThePlateLetsGoWhenTheFootLeansAsFarAsTheFailureRotation) {
+    const double degree = std::acos(-1.0) / 180;
+    RootSpringParams p;
+    p.failureRotation = 5 * degree;
+    RootSpring rocking(p, BendingReading::Isotropic);
+    const int n = 200;
+    const double swing = 2 * degree;  // past M_a / K_Root = 1.53 degrees: the plateau each way
+    rocking.rotate(Eigen::Vector3d(0, swing, 0));
+    for (int cycle = 0; cycle < 10; ++cycle)
+        for (double sign : {-1.0, 1.0})
+            for (int i = 0; i < n; ++i) rocking.rotate(Eigen::Vector3d(0, sign * 2 * swing / n, 0));
+    EXPECT_FALSE(rocking.failed()) << "20 swings of 4 degrees on the plateau, never beyond 2";
+    EXPECT_NEAR(std::abs(rocking.moment().y()), p.yieldMoment, kTol);
+
+    p.failureRotation = 0.999 * degree;  // below the yield rotation: the elastic root lets go there
+    RootSpring stiff(p, BendingReading::Isotropic);
+    for (int i = 0; i < n && !stiff.failed(); ++i) {
+        stiff.rotate(Eigen::Vector3d(0, degree / n, 0));
+        EXPECT_EQ(stiff.failed(), i == n - 1) << i;
+    }
+}

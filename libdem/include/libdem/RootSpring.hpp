@@ -30,8 +30,8 @@ public:
 private:
     BendingLaw bending_;
     double stiffness_;
-    double failureRotation_;     // rad, of the foot: yield rotation M_a / K_Root plus the plateau's
-    double plasticRotation_ = 0; // rad, turned on the plateau at M_a
+    double failureRotation_;                       // rad, of the foot's tilt
+    Eigen::Vector2d tilt_ = Eigen::Vector2d::Zero();  // rad, the foot's rotation about x and y from rest
     double twistAngle_ = 0;
     bool failed_ = false;
 };

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <utility>
 
 #include "Cli.hpp"
 #include "ProgressBar.hpp"
@@ -48,6 +49,25 @@ void drawFigures(const std::string& dir, const dem::Scene& scene, const std::vec
 }
 
 
+// The files a simulate run writes. An earlier run's are removed before a new one writes, so that the
+// folder never mixes two runs (a forested run's impacts.csv and figures beside a bare run's runs.csv
+// were left as they were); another command's folder is refused, as its outputs would be overwritten.
+const char* const kSimulateOutputs[] = {"runs.csv",        "summary.json",  "impacts.csv", "energy.json",
+                                        "runout_cdf.csv",  "runout_cdf.svg", "stop_map.svg", "trajectories"};
+
+void prepareOutFolder(const std::string& dir) {
+    namespace fs = std::filesystem;
+    if (fs::exists(dir) && !fs::is_directory(dir)) throw InputError("--out " + dir + " is a file, not a folder");
+    for (const auto& [store, command] : {std::pair{"campaign.sqlite", "assess"}, std::pair{"hazard.sqlite", "hazard"}})
+        if (fs::exists(fs::path(dir) / store))
+            throw InputError("--out " + dir + " holds a sylvarock " + command + " result (" + store +
+                             "): simulate would overwrite its files; give it a folder of its own");
+    bool replaced = false;
+    for (const char* name : kSimulateOutputs) replaced = fs::remove_all(fs::path(dir) / name) > 0 || replaced;
+    if (replaced) std::cerr << "--out " << dir << ": the earlier simulate run's outputs are replaced\n";
+    fs::create_directories(dir);
+}
+
 // What simulate runs, read from its options (every MPI rank reads the same).
 struct Simulation {
     std::string sceneFile, out;
@@ -56,7 +76,7 @@ struct Simulation {
     dem::CampaignOptions campaign;
 };
 
-// The simulation, or nothing when help was asked for. Only rank 0 creates the output folder.
+// The simulation, or nothing when help was asked for. Only rank 0 prepares the output folder.
 std::optional<Simulation> readSimulation(int argc, const char* const* argv) {
     po::options_description o("simulate");
     std::vector<std::string> sets;
@@ -98,7 +118,6 @@ std::optional<Simulation> readSimulation(int argc, const char* const* argv) {
     sim.sceneFile = vm["scene"].as<std::string>();
     sim.out = vm["out"].as<std::string>();
     sim.figures = !vm["no-figures"].as<bool>();
-    if (assess::MpiWorld::current().coordinator()) std::filesystem::create_directories(sim.out);
     sim.scene = std::make_unique<const dem::Scene>(dem::loadScene(sim.sceneFile, sets));
     dem::CampaignOptions& c = sim.campaign;
     c.runs = runs > 0 ? runs : (sim.scene->config().launch.enabled ? 1 : 100);
@@ -117,6 +136,7 @@ std::optional<Simulation> readSimulation(int argc, const char* const* argv) {
         }
     c.threads = threadCount(vm);
     c.run.recordTrajectory = vm["trajectory"].as<bool>();
+    if (assess::MpiWorld::current().coordinator()) prepareOutFolder(sim.out);  // once every option has been read
     return sim;
 }
 

@@ -107,6 +107,32 @@ TEST(SimulateCli, WritesRunsSummaryAndTrajectories) {
     EXPECT_TRUE(std::filesystem::exists(out / "trajectories" / "run_0002.vtk"));
 }
 
+// simulate wrote over any folder: a bare run into a forested run's folder left that run's
+// impacts.csv beside its own runs.csv, and a run into a hazard map's folder replaced its summary.json.
+// An earlier simulate run's outputs are now removed first, and another command's folder is refused.
+TEST(SimulateCli, AnEarlierRunsOutputsAreReplacedAndAnotherCommandsFolderRefused) {
+    const auto out = std::filesystem::temp_directory_path() / "sylvarock-tests" / "simulate-again";
+    std::filesystem::remove_all(out);
+    const std::string base = std::string("simulate --scene ") + SYLVAROCK_DATA + "/scenes/no-forest.ini --seed 2 --no-figures ";
+    ASSERT_EQ(cli(base + "--runs 2 --trajectory --out " + out.string()), 0);
+    std::ofstream(out / "impacts.csv") << "run,tree\n0,1\n";  // as a forested run leaves it
+    std::ofstream(out / "notes.txt") << "mine\n";
+    ASSERT_TRUE(std::filesystem::exists(out / "trajectories" / "run_0001.csv"));
+    ASSERT_EQ(cli(base + "--runs 1 --out " + out.string()), 0);
+    EXPECT_FALSE(std::filesystem::exists(out / "impacts.csv"));
+    EXPECT_FALSE(std::filesystem::exists(out / "trajectories"));
+    EXPECT_TRUE(std::filesystem::exists(out / "notes.txt")) << "a file simulate does not write is left alone";
+    const std::string runs = slurp((out / "runs.csv").string());
+    EXPECT_EQ(std::count(runs.begin(), runs.end(), '\n'), 2);
+    // A bad option leaves the earlier outputs where they were.
+    EXPECT_NE(cli(base + "--runs 1 --set soil.frction_deg=3 --out " + out.string()), 0);
+    EXPECT_TRUE(std::filesystem::exists(out / "runs.csv"));
+
+    std::ofstream(out / "hazard.sqlite") << "";
+    EXPECT_EQ(cli(base + "--runs 1 --out " + out.string()), 2 << 8);  // an input error
+    EXPECT_TRUE(std::filesystem::exists(out / "runs.csv"));
+}
+
 // --only-run runs one run of a campaign again, seeded as in the whole campaign: its row is the
 // same as the whole campaign's, field for field but the CPU time.
 TEST(SimulateCli, OnlyRunRepeatsThatRunOfTheCampaign) {

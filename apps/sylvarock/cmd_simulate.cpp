@@ -186,14 +186,19 @@ int runSimulate(int argc, const char* const* argv) {
         std::printf("energy budget: worst imbalance %.2f %%; %d run(s) above integration.energy_warning (%.0f %%)%s\n",
                     100 * s.worstEnergyImbalance, s.energyFlaggedRuns, 100 * scene.config().integration.energyWarning,
                     s.energyFlaggedRuns > 0 ? ": flagged in runs.csv (energy_flag), rerun them with a smaller integration.safety" : "");
-    if (const auto& f = s.forestEnergy; f.treeTerms() > 0)
-        std::printf("forest: the trees took %.1f MJ (bending %.1f, axial damping %.2f, root %.1f, rupture %.1f), contacts %.1f MJ; "
-                    "left vibrating in stems put to sleep %.2f MJ (%.1f %% of the trees' terms): %.2f MJ the motion of broken "
-                    "or uprooted stems' pieces, %.3f MJ in standing stems and contact springs (%.1f %%)\n",
-                    1e-6 * f.treeTerms(), 1e-6 * (f.bendingPlasticity + f.bendingDamping), 1e-6 * f.axialDamping, 1e-6 * f.rootPlasticity,
-                    1e-6 * f.rupture, 1e-6 * (f.contactFriction + f.contactDamping + f.contactCrushing), 1e-6 * f.frozen,
-                    100 * f.frozen / f.treeTerms(), 1e-6 * f.frozenPieces, 1e-6 * (f.frozen - f.frozenPieces),
+    // A forest's energies are megajoules, a single tree's kilojoules (in MJ its terms read 0.0).
+    if (const auto& f = s.forestEnergy; f.treeTerms() > 0) {
+        const bool oneTree = scene.config().launch.enabled;
+        const double u = oneTree ? 1e-3 : 1e-6;
+        const char* unit = oneTree ? "kJ" : "MJ";
+        std::printf("forest: the trees took %.1f %s (bending %.1f, axial damping %.2f, root %.1f, rupture %.1f), contacts %.1f %s; "
+                    "left vibrating in stems put to sleep %.2f %s (%.1f %% of the trees' terms): %.2f %s the motion of broken "
+                    "or uprooted stems' pieces, %.3f %s in standing stems and contact springs (%.1f %%)\n",
+                    u * f.treeTerms(), unit, u * (f.bendingPlasticity + f.bendingDamping), u * f.axialDamping, u * f.rootPlasticity,
+                    u * f.rupture, u * (f.contactFriction + f.contactDamping + f.contactCrushing), unit, u * f.frozen, unit,
+                    100 * f.frozen / f.treeTerms(), u * f.frozenPieces, unit, u * (f.frozen - f.frozenPieces), unit,
                     100 * (f.frozen - f.frozenPieces) / f.treeTerms());
+    }
     std::printf("results in %s/\n", out.c_str());
     // A block that left the terrain would have gone further: its run-out is a lower bound, and so is
     // Dist50 once half the blocks left.

@@ -1,5 +1,6 @@
 #include "libassess/AssessmentDesign.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -81,8 +82,13 @@ void validate(const AssessmentDesign& d) {
 std::string designText(const AssessmentDesign& d) {
     std::ostringstream out;
     out << "# sylvarock assess: the design of the campaign in this directory (checked by --resume)\n"
-        << "format = 2\nseed = " << d.seed << "\nruns_per_realisation = " << d.runs << "\nrealisations = " << d.realisations
-        << "\nbaseline_runs = " << d.baselineRuns << "\n";
+        << "format = 2\nseed = " << d.seed << "\n";
+    // Each model's run counts only where it runs: a lumped-only campaign's --runs is not used, and
+    // a resume must not be refused over it.
+    const bool dem = std::count(d.models.begin(), d.models.end(), dem::Model::Dem) > 0;
+    if (dem) out << "runs_per_realisation = " << d.runs << "\n";
+    out << "realisations = " << d.realisations << "\n";
+    if (dem) out << "baseline_runs = " << d.baselineRuns << "\n";
     for (auto model : d.models) {
         out << "model = " << dem::toString(model) << "\n";
         if (model == dem::Model::Lumped)

@@ -235,9 +235,10 @@ Json designJson(const AssessmentDesign& d, const BootstrapSettings& bootstrap) {
     design["scene"] = d.sceneFile;
     design["scene_set"] = d.sceneOverrides;
     design["seed"] = d.seed;
-    design["runs_per_realisation"] = d.runs;
+    const bool dem = std::count(d.models.begin(), d.models.end(), dem::Model::Dem) > 0;
+    if (dem) design["runs_per_realisation"] = d.runs;  // the DEM's counts only where it ran
     design["realisations"] = d.realisations;
-    design["baseline_runs"] = d.baselineRuns;
+    if (dem) design["baseline_runs"] = d.baselineRuns;
     design["models"] = Json::array();
     for (auto model : d.models) design["models"].push_back(dem::toString(model));
     if (std::count(d.models.begin(), d.models.end(), dem::Model::Lumped)) {

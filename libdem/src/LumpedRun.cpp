@@ -150,6 +150,7 @@ RunResult simulateLumped(const Scene& scene, int run, std::uint64_t seed, const 
             rec.speedBefore = v.norm();
             rec.energyBefore = 0.5 * mass * v.squaredNorm();
             rec.height = p.z() - tree.foot.z();
+            rec.stemHeight = tree.geometry.height;
             rec.eccentricity = hit.offset / (blockReach + 0.5 * tree.geometry.dbh);
             const auto out = treeImpact.apply(v, tree.geometry.dbh, rec.eccentricity, rec.height, mass, rng);
             v = out.velocity;

@@ -94,6 +94,28 @@ TEST_F(AssessResume, MismatchedDesignIsRefused) {
     EXPECT_THROW(runAssessment(otherSeed), sylva::InputError);
 }
 
+// A lumped-only campaign recorded the DEM's run counts it never used: its results.json reported
+// 100 runs per realisation and 1 000 baseline runs, and a resume with another --runs was refused.
+TEST_F(AssessResume, ALumpedOnlyCampaignKeepsNoDemRunCounts) {
+    AssessmentOptions lumped = options("l", 2);
+    lumped.design.models = {sylva::dem::Model::Lumped};
+    lumped.design.lumpedRuns = 5;
+    lumped.design.lumpedBaselineRuns = 7;
+    assess(lumped);
+    const std::string json = [&] {
+        std::ifstream in(lumped.outDir + "/results.json");
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    }();
+    EXPECT_EQ(json.find("\"runs_per_realisation\""), std::string::npos) << json;
+    EXPECT_EQ(json.find("\"baseline_runs\""), std::string::npos) << json;
+    EXPECT_NE(json.find("\"lumped_runs_per_realisation\": 5"), std::string::npos) << json;
+    AssessmentOptions resumed = lumped;
+    resumed.resume = true;
+    resumed.design.runs = 7;
+    resumed.design.baselineRuns = 9;
+    EXPECT_EQ(assess(resumed), 0) << "the DEM's counts are not the lumped campaign's";
+}
+
 TEST_F(AssessResume, NonEmptyOutputWithoutResumeIsRefused) {
     fs::create_directories(root_ / "busy");
     spit(root_ / "busy/notes.txt", "someone's file\n");

@@ -148,6 +148,8 @@ TEST(LumpedRun, ABlockReleasedWithinReachOfAStemHitsIt) {
     ASSERT_EQ(r.impacts.size(), 1u);
     EXPECT_EQ(r.impacts[0].tree, 1);
     EXPECT_LT(r.impacts[0].energyAfter, r.impacts[0].energyBefore);
+    EXPECT_DOUBLE_EQ(r.impacts[0].stemHeight, 20);  // impacts.csv stem_height_m (it was 0 for every lumped impact)
+    EXPECT_TRUE(std::isnan(r.impacts[0].breakHeight));  // the lumped model does not place a break
 }
 
 TEST(LumpedRun, ResultsDoNotDependOnTheNumberOfThreads) {

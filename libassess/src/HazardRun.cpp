@@ -470,7 +470,7 @@ HazardResults runHazard(const HazardOptions& o) {
                                    {"area_ha", st.areaHa},
                                    {"stems", st.stems},
                                    {"stems_per_ha", st.areaHa > 0 ? st.stems / st.areaHa : 0.0},
-                                   {"seed", st.seed}});
+                                   {"seed", std::to_string(st.seed)}});  // 64 bits: a string, as in the GeoPackage (jq and JavaScript round a number this long)
     }
     for (const auto& p : results.passes) j["passes"][p.name] = passJson(p);
     j["rasters"] = results.rasters;

@@ -884,4 +884,22 @@ TEST_F(StandPolygons, BadStandsSayWhatIsWrong) {
     EXPECT_NE(errorOf([&] { runHazard(o); }).find("--trees and --stands both give the forest"), std::string::npos);
 }
 
+// A stand's forest seed is 64 bits: as a JSON number it was read rounded by jq and JavaScript
+// (9716232063330790915 as 9716232063330791000); summary.json gives it as a string, as the GeoPackage does.
+TEST_F(StandPolygons, SummaryGivesEachStandsSeedAsAString) {
+    HazardOptions o;
+    o.dtmPath = flat();
+    o.releasePath = polygon("release.geojson", 10, 10, 20, 20);
+    o.standsPath = stands({{"{\"stand\": \"" + mo1() + "\"}", {{{100, 10}, {250, 10}, {250, 190}, {100, 190}, {100, 10}}}}});
+    o.model = sylva::dem::Model::Lumped;
+    o.runsPerCell = 1;
+    o.outDir = (dir_ / "seeds").string();
+    runHazard(o);
+    std::ifstream in(dir_ / "seeds/summary.json");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::uint64_t seed = readStandPolygons(o.standsPath, readDtm(o.dtmPath), o.seed).polygons.at(0).seed;
+    EXPECT_GT(seed, std::uint64_t(1) << 53) << "a seed a double holds exactly would not show the rounding";
+    EXPECT_NE(text.find("\"seed\": \"" + std::to_string(seed) + "\""), std::string::npos) << text;
+}
+
 }  // namespace

@@ -6,6 +6,7 @@
 #include "Cli.hpp"
 #include "libassess/MpiWorld.hpp"
 #include "libdem/OptionErrorMessage.hpp"
+#include "libcommon/BuildId.hpp"
 #include "libcommon/InputError.hpp"
 
 namespace {
@@ -26,7 +27,7 @@ int main(int argc, char** argv) {
         return argc < 2 ? 2 : 0;
     }
     if (!std::strcmp(argv[1], "--version")) {
-        std::cout << "sylvarock 0.1.0\n";
+        std::cout << "sylvarock 0.1.0 (build " << sylva::buildId() << ")\n";
         return 0;
     }
     for (const auto& c : sylva::cli::commands()) {

@@ -8,11 +8,14 @@
 
 #include "libassess/Hashing.hpp"
 #include "libdem/SceneConfig.hpp"
+#include "libcommon/BuildId.hpp"
 #include "libcommon/InputError.hpp"
 
 namespace sylva::assess {
 
 namespace {
+
+const char* const kMadeBy = "# made by sylvarock ";
 
 std::string fileLine(const std::string& key, const std::string& path) {
     return key + " = " + toHex(fileFingerprint(path), 16) + "\n# " + key + " file: " +
@@ -105,10 +108,11 @@ std::string designText(const AssessmentDesign& d) {
         out << "stand = " << s.name << "\n";
         out << fileLine("stand_stems", s.stemsCsv) << fileLine("stand_plots", s.plotsCsv);
     }
+    out << kMadeBy << sylva::buildId() << "\n";  // last: the lines above keep their numbers
     return out.str();
 }
 
-void requireSameDesign(const std::string& storedText, const std::string& where, const AssessmentDesign& design) {
+std::string requireSameDesign(const std::string& storedText, const std::string& where, const AssessmentDesign& design) {
     std::istringstream stored(storedText), wanted(designText(design));
     const auto have = significantLines(stored), want = significantLines(wanted);
     const std::string advice = "; resume with the options of that campaign, or start a new one with another --out";
@@ -119,6 +123,14 @@ void requireSameDesign(const std::string& storedText, const std::string& where, 
         const std::string now = i < want.size() ? "'" + want[i].second + "'" : "nothing";
         throw InputError(where + ", design line " + std::to_string(line) + ": the campaign there was started with " + was + ", this one asks for " + now + advice);
     }
+    std::istringstream lines(storedText);
+    std::string madeBy = "an unrecorded build (before 28 Nov. 2026)";
+    for (std::string line; std::getline(lines, line);)
+        if (line.rfind(kMadeBy, 0) == 0) madeBy = "build " + line.substr(std::string(kMadeBy).size());
+    if (madeBy == std::string("build ") + sylva::buildId()) return {};
+    return where + ": its runs were made by sylvarock " + madeBy + ", this is build " + sylva::buildId() +
+           ": if the model changed between them, the runs made now differ from those the first build would have made "
+           "(start the campaign in a new --out to have every run from this build)";
 }
 
 }  // namespace sylva::assess

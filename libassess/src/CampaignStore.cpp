@@ -137,7 +137,7 @@ void CampaignStore::checkStored(const AssessmentDesign& design) {
         throw InputError(path(), 0, "the campaign store is damaged (" + check.text(0) + "): start the campaign again in another --out");
     std::string text;
     for (auto lines = db_->prepare("SELECT text FROM design ORDER BY line"); lines.step();) text += lines.text(0) + "\n";
-    requireSameDesign(text, path(), design);
+    if (std::string other = requireSameDesign(text, path(), design); !other.empty()) note(std::move(other));
     // The design fixes the plan; a plan that differs is a store written by hand or by another version.
     std::size_t n = 0;
     for (auto campaigns = db_->prepare("SELECT id, runs, run_seed FROM campaigns ORDER BY position"); campaigns.step(); ++n) {

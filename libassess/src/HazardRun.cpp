@@ -26,6 +26,7 @@
 #include "libassess/ReleaseArea.hpp"
 #include "libassess/SoilMap.hpp"
 #include "libassess/TreePoints.hpp"
+#include "libcommon/BuildId.hpp"
 #include "libcommon/InputError.hpp"
 #include "libcommon/SeededRandom.hpp"
 #include "libcommon/ThreadTeam.hpp"
@@ -102,6 +103,7 @@ std::vector<std::string> inputsOf(const HazardOptions& o, const stand::Forest& f
                                    std::string("compare bare ") + (o.compareBare ? "yes" : "no"),
                                    std::string("trajectories ") + (o.writeTrajectories || o.writeVtk ? "kept" : "not kept")};
     for (const auto& set : o.sceneOverrides) lines.push_back("set " + set);
+    lines.push_back(std::string("# made by sylvarock build ") + buildId());
     return lines;
 }
 
@@ -372,6 +374,7 @@ HazardResults runHazard(const HazardOptions& o) {
     const stand::Forest& trees = scene.forest();
     const std::unique_ptr<HazardStore> store =
         o.resume ? HazardStore::resume(storePath, inputsOf(o, trees)) : HazardStore::create(storePath, inputsOf(o, trees));
+    if (!store->note().empty() && o.onNote) o.onNote(store->note());
     if (o.resume) {  // the same map: its paths are written again whole (a refused resume leaves them)
         fs::remove(fs::path(o.outDir) / "trajectories.gpkg");
         fs::remove_all(fs::path(o.outDir) / "vtk");

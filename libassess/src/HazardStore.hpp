@@ -18,6 +18,8 @@ class HazardStore {
 public:
     // `fingerprint`: one line per input ("dtm: PATH HASH", "seed: 4", ...). create() starts a new
     // store; resume() opens the existing one and throws InputError naming the first line that differs.
+    // Lines starting with "# " (the build that made the runs) are not compared: one that differs is
+    // kept in note(), to be said.
     static std::unique_ptr<HazardStore> create(const std::string& path, const std::vector<std::string>& fingerprint);
     static std::unique_ptr<HazardStore> resume(const std::string& path, const std::vector<std::string>& fingerprint);
 
@@ -29,6 +31,7 @@ public:
     // Thread-safe; written in batches (a transaction per 64 runs or 5 s), the rest by flush().
     void save(const std::string& pass, long run, bool failed, std::string record);
     void flush();
+    const std::string& note() const { return note_; }
 
 private:
     explicit HazardStore(const std::string& path, bool create);
@@ -42,6 +45,7 @@ private:
         std::string record;
     };
     std::vector<Pending> pending_;
+    std::string note_;
     std::chrono::steady_clock::time_point lastWrite_ = std::chrono::steady_clock::now();
 };
 

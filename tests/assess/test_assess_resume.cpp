@@ -116,6 +116,29 @@ TEST_F(AssessResume, ALumpedOnlyCampaignKeepsNoDemRunCounts) {
     EXPECT_EQ(assess(resumed), 0) << "the DEM's counts are not the lumped campaign's";
 }
 
+// A resume by another build reused the stored runs without a word, though a build that changed the
+// model makes other runs of the same seeds (7 of 320 run-outs differed, and PF50 with them). The
+// store records the build; a resume by another says so (it is not refused: most builds change no run).
+TEST_F(AssessResume, AResumeByAnotherBuildIsSaid) {
+    assess(options("c", 2));
+    const auto notesOfResume = [&] {
+        AssessmentOptions again = options("c", 2);
+        again.resume = true;
+        std::vector<std::string> notes;
+        again.onNote = [&notes](const std::string& n) { notes.push_back(n); };
+        EXPECT_EQ(assess(again), 0);
+        return notes;
+    };
+    const auto mentions = [](const std::vector<std::string>& notes, const std::string& what) {
+        return std::any_of(notes.begin(), notes.end(), [&](const std::string& n) { return n.find(what) != std::string::npos; });
+    };
+    EXPECT_FALSE(mentions(notesOfResume(), "made by sylvarock"));
+    editStore((root_ / "c" / CampaignStore::kFileName).string(),
+              "UPDATE design SET text = '# made by sylvarock 0123abcd' WHERE text LIKE '# made by sylvarock %'");
+    const auto notes = notesOfResume();
+    EXPECT_TRUE(mentions(notes, "its runs were made by sylvarock build 0123abcd, this is build")) << ::testing::PrintToString(notes);
+}
+
 TEST_F(AssessResume, NonEmptyOutputWithoutResumeIsRefused) {
     fs::create_directories(root_ / "busy");
     spit(root_ / "busy/notes.txt", "someone's file\n");

@@ -592,6 +592,32 @@ TEST_F(Hazard, AReleasePointInTheSceneIsSaidToBeReplaced) {
     EXPECT_EQ(notesOf({}, "none"), 0);
 }
 
+// A resumed map records the build that made its runs; a resume by another build says so (the runs it
+// keeps may not be the runs this build makes), and by the same build says nothing.
+TEST_F(Hazard, AResumeByAnotherBuildIsSaid) {
+    HazardOptions o = bareSlopeWithVolumes(1, "1", "built");
+    runHazard(o);
+    const auto notesOfResume = [&] {
+        std::vector<std::string> notes;
+        HazardOptions again = o;
+        again.resume = true;
+        again.onNote = [&notes](const std::string& n) { notes.push_back(n); };
+        runHazard(again);
+        return std::count_if(notes.begin(), notes.end(), [](const std::string& n) {
+            return n.find("its runs were made by sylvarock build 0123abcd; this is sylvarock build") != std::string::npos;
+        });
+    };
+    EXPECT_EQ(notesOfResume(), 0);
+    sqlite3* db = nullptr;
+    ASSERT_EQ(sqlite3_open((dir_ / "built/hazard.sqlite").c_str(), &db), SQLITE_OK);
+    ASSERT_EQ(sqlite3_exec(db, "UPDATE inputs SET text = '# made by sylvarock build 0123abcd' WHERE text LIKE '# made by %'", nullptr,
+                           nullptr, nullptr),
+              SQLITE_OK);
+    EXPECT_EQ(sqlite3_changes(db), 1);
+    sqlite3_close(db);
+    EXPECT_EQ(notesOfResume(), 1);
+}
+
 // One volume is a distribution too (it once indexed an empty count), and a pass in which no block
 // could start writes no map: an all-zero one would read as ground no block reaches.
 TEST_F(Hazard, OneBlockVolumeIsCountedAndAPassWithoutBlocksWritesNoMap) {

@@ -53,7 +53,9 @@ void validate(const AssessmentDesign& design);
 std::string designText(const AssessmentDesign& design);
 
 // Throws InputError naming `where` (the campaign store), the line and both values at the first line
-// where the stored design text differs from `design`'s (comments are ignored).
-void requireSameDesign(const std::string& storedText, const std::string& where, const AssessmentDesign& design);
+// where the stored design text differs from `design`'s (comments are ignored). Returns a note when
+// the stored design was written by another build of sylvarock: not refused, as most builds change no
+// run, but said, as a build that changed the physics makes other runs of the same seeds.
+std::string requireSameDesign(const std::string& storedText, const std::string& where, const AssessmentDesign& design);
 
 }  // namespace sylva::assess

@@ -15,6 +15,7 @@
 #include "Gnuplot.hpp"
 #include "libassess/MpiWorld.hpp"
 #include "libassess/RankedCampaign.hpp"
+#include "libdem/BlockShape.hpp"
 #include "libdem/Campaign.hpp"
 #include "libdem/CampaignSummary.hpp"
 #include "libcommon/InputError.hpp"
@@ -109,7 +110,14 @@ std::optional<Simulation> readSimulation(int argc, const char* const* argv) {
     if (!vm.count("scene")) throw InputError("--scene is required (e.g. data/scenes/no-forest.ini)");
     if (!vm.count("out")) throw InputError("--out DIR is required");
     const dem::Model model = dem::parseModel(vm["model"].as<std::string>());  // before the scene is built
-    if (vm.count("block")) sets.insert(sets.begin(), "block.shape=" + vm["block"].as<std::string>());
+    if (vm.count("block")) {
+        try {
+            dem::parseBlockShape(vm["block"].as<std::string>());  // named as the user typed it, not as the --set it becomes
+        } catch (const InputError& e) {
+            throw InputError(std::string("--block: ") + e.what());
+        }
+        sets.insert(sets.begin(), "block.shape=" + vm["block"].as<std::string>());
+    }
     applyForestOption(vm, sets);
     const int runs = vm.count("runs") ? vm["runs"].as<int>() : -1;
     if (vm.count("runs") && runs < 1) throw InputError("--runs must be at least 1");

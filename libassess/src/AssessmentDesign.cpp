@@ -114,19 +114,31 @@ std::string designText(const AssessmentDesign& d) {
 
 std::string requireSameDesign(const std::string& storedText, const std::string& where, const AssessmentDesign& design) {
     std::istringstream stored(storedText), wanted(designText(design));
-    const auto have = significantLines(stored), want = significantLines(wanted);
+    auto have = significantLines(stored);
+    const auto want = significantLines(wanted);
+    // Lumped-only designs written before 28 Nov. 2026 held the DEM's unused run counts: not part of
+    // what their runs depend on, so not compared.
+    const auto line = [&](const std::string& text) {
+        return std::any_of(have.begin(), have.end(), [&](const auto& l) { return l.second == text; });
+    };
+    if (!line("model = dem"))
+        have.erase(std::remove_if(have.begin(), have.end(),
+                                  [](const auto& l) {
+                                      return l.second.rfind("runs_per_realisation = ", 0) == 0 || l.second.rfind("baseline_runs = ", 0) == 0;
+                                  }),
+                   have.end());
     const std::string advice = "; resume with the options of that campaign, or start a new one with another --out";
     for (std::size_t i = 0; i < std::max(have.size(), want.size()); ++i) {
         if (i < have.size() && i < want.size() && have[i].second == want[i].second) continue;
-        const long line = i < have.size() ? have[i].first : (have.empty() ? 0 : have.back().first);
+        const long number = i < have.size() ? have[i].first : (have.empty() ? 0 : have.back().first);
         const std::string was = i < have.size() ? "'" + have[i].second + "'" : "nothing";
         const std::string now = i < want.size() ? "'" + want[i].second + "'" : "nothing";
-        throw InputError(where + ", design line " + std::to_string(line) + ": the campaign there was started with " + was + ", this one asks for " + now + advice);
+        throw InputError(where + ", design line " + std::to_string(number) + ": the campaign there was started with " + was + ", this one asks for " + now + advice);
     }
     std::istringstream lines(storedText);
     std::string madeBy = "an unrecorded build (before 28 Nov. 2026)";
-    for (std::string line; std::getline(lines, line);)
-        if (line.rfind(kMadeBy, 0) == 0) madeBy = "build " + line.substr(std::string(kMadeBy).size());
+    for (std::string text; std::getline(lines, text);)
+        if (text.rfind(kMadeBy, 0) == 0) madeBy = "build " + text.substr(std::string(kMadeBy).size());
     if (madeBy == std::string("build ") + sylva::buildId()) return {};
     return where + ": its runs were made by sylvarock " + madeBy + ", this is build " + sylva::buildId() +
            ": if the model changed between them, the runs made now differ from those the first build would have made "

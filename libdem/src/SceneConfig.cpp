@@ -435,9 +435,20 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
     c.release.yRangeGiven = vm.count("release.y_min_m") || vm.count("release.y_max_m");
     if (!vm.count("release.y_min_m")) c.release.yMin = c.release.y;
     if (!vm.count("release.y_max_m")) c.release.yMax = c.release.y;
-    if (c.release.yMax < c.release.yMin)
-        throw refuse(vm.count("release.y_max_m") ? "release.y_max_m" : "release.y_min_m",
-                     "release.y_max_m = " + text(c.release.yMax) + " is below release.y_min_m = " + text(c.release.yMin));
+    // Two keys in one refusal: the one typed on --set is named, else the file's line of either.
+    const auto givenOf = [&](std::initializer_list<const char*> pair) {
+        for (const char* k : pair)
+            if (fromSet.count(k)) return k;
+        for (const char* k : pair)
+            if (vm.count(k) && !vm[k].defaulted()) return k;
+        return *pair.begin();
+    };
+    if (c.release.yMax < c.release.yMin) {
+        const std::string blamed = givenOf({"release.y_max_m", "release.y_min_m"});
+        throw refuse(blamed, blamed == "release.y_max_m"
+                                 ? "release.y_max_m = " + text(c.release.yMax) + " is below release.y_min_m = " + text(c.release.yMin)
+                                 : "release.y_min_m = " + text(c.release.yMin) + " is above release.y_max_m = " + text(c.release.yMax));
+    }
     if (vm.count("soil.restitution")) c.soilContact.dampingRatio = dampingRatioFromRestitution(keys.restitution);
     if (c.block.shape == BlockShapeKind::Cube && vm.count("block.d1_m")) c.block.volumeM3 = c.block.d1 * c.block.d1 * c.block.d1;
     // The clump's spheres have a quarter of the shortest edge (Eq. 1), so their number grows with the
@@ -446,7 +457,7 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
     if (c.block.shape == BlockShapeKind::Cuboid && c.block.d1 > 0 && c.block.d2 > 0 && c.block.d3 > 0) {
         const double ratio = std::max({c.block.d1, c.block.d2, c.block.d3}) / std::min({c.block.d1, c.block.d2, c.block.d3});
         if (ratio > 10)
-            throw refuse("block.d3_m", "block.d1_m, d2_m, d3_m: the longest edge is " + text(ratio) +
+            throw refuse(givenOf({"block.d3_m", "block.d2_m", "block.d1_m"}), "block.d1_m, d2_m, d3_m: the longest edge is " + text(ratio) +
                                  " times the shortest, above 10 (the clump's spheres are a quarter of the shortest edge, "
                                  "Eq. 1, so their number grows with the ratio squared): a slab that thin is not a block");
     }

@@ -114,6 +114,14 @@ TEST_F(AssessResume, ALumpedOnlyCampaignKeepsNoDemRunCounts) {
     resumed.design.runs = 7;
     resumed.design.baselineRuns = 9;
     EXPECT_EQ(assess(resumed), 0) << "the DEM's counts are not the lumped campaign's";
+    // A store of the old layout (those counts as design lines 4 and 6) resumes too.
+    const auto insertLine = [](int at, const std::string& text) {
+        return "UPDATE design SET line = -line - 1 WHERE line >= " + std::to_string(at) + "; UPDATE design SET line = -line WHERE line < 0; " +
+               "INSERT INTO design (line, text) VALUES (" + std::to_string(at) + ", '" + text + "');";
+    };
+    editStore(lumped.outDir + "/" + CampaignStore::kFileName,
+              insertLine(4, "runs_per_realisation = 100") + insertLine(6, "baseline_runs = 1000"));
+    EXPECT_EQ(assess(resumed), 0);
 }
 
 // A resume by another build reused the stored runs without a word, though a build that changed the

@@ -291,6 +291,13 @@ TEST(SceneConfigParser, EveryRefusalNamesWhereItsKeyWasGiven) {
         const std::string what = refusalOf(set);
         EXPECT_EQ(what.rfind("--set " + bad.substr(0, bad.find('=')), 0), 0u) << bad << ": " << what;
     }
+    // Of two keys compared, the one typed on --set is named.
+    EXPECT_EQ(refusalOf({"release.y_min_m=70"}).rfind("--set release.y_min_m = 70 is above release.y_max_m = 40", 0), 0u)
+        << refusalOf({"release.y_min_m=70"});
+    const std::string slab =
+        writeScene("slab.ini", "[block]\nshape = cuboid\nd1_m = 1\nd2_m = 1\nd3_m = 0.9\n");
+    EXPECT_EQ(fileRefusal(slab, {"block.d1_m=20"}).rfind("--set block.d1_m, d2_m, d3_m: the longest edge", 0), 0u) << fileRefusal(slab, {"block.d1_m=20"});
+    EXPECT_NE(fileRefusal(slab, {"block.d1_m=20", "block.d3_m=1"}).find("longest edge is 20 times"), std::string::npos);
     const std::string shape = writeScene("shape.ini", "# a block\n[block]\nshape = pyramid\n");
     EXPECT_NE(fileRefusal(shape).find("shape.ini:3: block.shape"), std::string::npos) << fileRefusal(shape);
 }

@@ -136,11 +136,11 @@ std::string requireSameDesign(const std::string& storedText, const std::string& 
         throw InputError(where + ", design line " + std::to_string(number) + ": the campaign there was started with " + was + ", this one asks for " + now + advice);
     }
     std::istringstream lines(storedText);
-    std::string madeBy = "an unrecorded build (before 28 Nov. 2026)";
+    std::string madeBy = "an unrecorded build of sylvarock (before 28 Nov. 2026)";
     for (std::string text; std::getline(lines, text);)
-        if (text.rfind(kMadeBy, 0) == 0) madeBy = "build " + text.substr(std::string(kMadeBy).size());
-    if (madeBy == std::string("build ") + sylva::buildId()) return {};
-    return where + ": its runs were made by sylvarock " + madeBy + ", this is build " + sylva::buildId() +
+        if (text.rfind(kMadeBy, 0) == 0) madeBy = "sylvarock build " + text.substr(std::string(kMadeBy).size());
+    if (madeBy == std::string("sylvarock build ") + sylva::buildId()) return {};
+    return where + ": its runs were made by " + madeBy + ", this is build " + sylva::buildId() +
            ": if the model changed between them, the runs made now differ from those the first build would have made "
            "(start the campaign in a new --out to have every run from this build)";
 }

@@ -15,8 +15,6 @@ namespace sylva::assess {
 
 namespace {
 
-const char* const kMadeBy = "# made by sylvarock ";
-
 std::string fileLine(const std::string& key, const std::string& path) {
     return key + " = " + toHex(fileFingerprint(path), 16) + "\n# " + key + " file: " +
            std::filesystem::absolute(path).lexically_normal().string() + "\n";
@@ -43,6 +41,10 @@ StandSource standFromPrefix(const std::string& prefix) {
             throw InputError("--stand '" + prefix + "': " + f + " does not exist (a stand is given by the prefix of " +
                              "its PREFIX_stems.csv and PREFIX_plots.csv)");
     return s;
+}
+
+bool usesModel(const AssessmentDesign& design, dem::Model model) {
+    return std::find(design.models.begin(), design.models.end(), model) != design.models.end();
 }
 
 int runsPerRealisation(const AssessmentDesign& design, dem::Model model) {
@@ -88,10 +90,10 @@ std::string designText(const AssessmentDesign& d) {
         << "format = 2\nseed = " << d.seed << "\n";
     // Each model's run counts only where it runs: a lumped-only campaign's --runs is not used, and
     // a resume must not be refused over it.
-    const bool dem = std::count(d.models.begin(), d.models.end(), dem::Model::Dem) > 0;
-    if (dem) out << "runs_per_realisation = " << d.runs << "\n";
+    const bool demRuns = usesModel(d, dem::Model::Dem);
+    if (demRuns) out << "runs_per_realisation = " << d.runs << "\n";
     out << "realisations = " << d.realisations << "\n";
-    if (dem) out << "baseline_runs = " << d.baselineRuns << "\n";
+    if (demRuns) out << "baseline_runs = " << d.baselineRuns << "\n";
     for (auto model : d.models) {
         out << "model = " << dem::toString(model) << "\n";
         if (model == dem::Model::Lumped)
@@ -108,7 +110,7 @@ std::string designText(const AssessmentDesign& d) {
         out << "stand = " << s.name << "\n";
         out << fileLine("stand_stems", s.stemsCsv) << fileLine("stand_plots", s.plotsCsv);
     }
-    out << kMadeBy << sylva::buildId() << "\n";  // last: the lines above keep their numbers
+    out << sylva::madeByLine() << "\n";  // last: the lines above keep their numbers
     return out.str();
 }
 
@@ -136,13 +138,9 @@ std::string requireSameDesign(const std::string& storedText, const std::string& 
         throw InputError(where + ", design line " + std::to_string(number) + ": the campaign there was started with " + was + ", this one asks for " + now + advice);
     }
     std::istringstream lines(storedText);
-    std::string madeBy = "an unrecorded build of sylvarock (before 28 Nov. 2026)";
-    for (std::string text; std::getline(lines, text);)
-        if (text.rfind(kMadeBy, 0) == 0) madeBy = "sylvarock build " + text.substr(std::string(kMadeBy).size());
-    if (madeBy == std::string("sylvarock build ") + sylva::buildId()) return {};
-    return where + ": its runs were made by " + madeBy + ", this is build " + sylva::buildId() +
-           ": if the model changed between them, the runs made now differ from those the first build would have made "
-           "(start the campaign in a new --out to have every run from this build)";
+    std::vector<std::string> storedLines;
+    for (std::string text; std::getline(lines, text);) storedLines.push_back(text);
+    return sylva::otherBuildNote(where, storedLines, "campaign");
 }
 
 }  // namespace sylva::assess

@@ -103,7 +103,7 @@ std::vector<std::string> inputsOf(const HazardOptions& o, const stand::Forest& f
                                    std::string("compare bare ") + (o.compareBare ? "yes" : "no"),
                                    std::string("trajectories ") + (o.writeTrajectories || o.writeVtk ? "kept" : "not kept")};
     for (const auto& set : o.sceneOverrides) lines.push_back("set " + set);
-    lines.push_back(std::string("# made by sylvarock build ") + buildId());
+    lines.push_back(madeByLine());
     return lines;
 }
 

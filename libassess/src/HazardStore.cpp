@@ -36,20 +36,14 @@ std::unique_ptr<HazardStore> HazardStore::resume(const std::string& path, const 
     std::vector<std::string> stored;
     SqliteStatement read = s->db_.prepare("SELECT text FROM inputs ORDER BY line");
     while (read.step()) stored.push_back(read.text(0));
-    const auto compared = [](std::vector<std::string> lines, std::string& said) {
-        const auto comment = [](const std::string& l) { return l.rfind("# ", 0) == 0; };
-        for (const auto& l : lines)
-            if (comment(l)) said += (said.empty() ? "" : "; ") + l.substr(2);
-        lines.erase(std::remove_if(lines.begin(), lines.end(), comment), lines.end());
+    s->note_ = otherBuildNote(path, stored, "map");
+    // The build is said, not compared (a note above): the inputs are.
+    const auto inputs = [](std::vector<std::string> lines) {
+        lines.erase(std::remove_if(lines.begin(), lines.end(), [](const std::string& l) { return l.rfind("# ", 0) == 0; }), lines.end());
         return lines;
     };
-    std::string storedSays, nowSays;
-    stored = compared(stored, storedSays);
-    const std::vector<std::string> wanted = compared(fingerprint, nowSays);
-    if (storedSays != nowSays)
-        s->note_ = path + ": its runs were " + (storedSays.empty() ? "made by an unrecorded build (before 28 Nov. 2026)" : storedSays) +
-                   "; this is sylvarock build " + buildId() + ": if the model changed between them, the runs made now differ from those the first "
-                   "build would have made (start the map in a new --out to have every run from this build)";
+    stored = inputs(stored);
+    const std::vector<std::string> wanted = inputs(fingerprint);
     for (std::size_t i = 0; i < std::max(stored.size(), wanted.size()); ++i) {
         const std::string was = i < stored.size() ? stored[i] : "(nothing)", now = i < wanted.size() ? wanted[i] : "(nothing)";
         if (was != now)

@@ -235,13 +235,13 @@ Json designJson(const AssessmentDesign& d, const BootstrapSettings& bootstrap) {
     design["scene"] = d.sceneFile;
     design["scene_set"] = d.sceneOverrides;
     design["seed"] = d.seed;
-    const bool dem = std::count(d.models.begin(), d.models.end(), dem::Model::Dem) > 0;
-    if (dem) design["runs_per_realisation"] = d.runs;  // the DEM's counts only where it ran
+    const bool demRuns = usesModel(d, dem::Model::Dem);
+    if (demRuns) design["runs_per_realisation"] = d.runs;  // the DEM's counts only where it ran
     design["realisations"] = d.realisations;
-    if (dem) design["baseline_runs"] = d.baselineRuns;
+    if (demRuns) design["baseline_runs"] = d.baselineRuns;
     design["models"] = Json::array();
     for (auto model : d.models) design["models"].push_back(dem::toString(model));
-    if (std::count(d.models.begin(), d.models.end(), dem::Model::Lumped)) {
+    if (usesModel(d, dem::Model::Lumped)) {
         design["lumped_runs_per_realisation"] = d.lumpedRuns;
         design["lumped_baseline_runs"] = d.lumpedBaselineRuns;
     }

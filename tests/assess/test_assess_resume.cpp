@@ -144,7 +144,7 @@ TEST_F(AssessResume, AResumeByAnotherBuildIsSaid) {
     editStore((root_ / "c" / CampaignStore::kFileName).string(),
               "UPDATE design SET text = '# made by sylvarock 0123abcd' WHERE text LIKE '# made by sylvarock %'");
     const auto notes = notesOfResume();
-    EXPECT_TRUE(mentions(notes, "its runs were made by sylvarock build 0123abcd, this is build")) << ::testing::PrintToString(notes);
+    EXPECT_TRUE(mentions(notes, "its runs were made by sylvarock build 0123abcd, this is sylvarock build")) << ::testing::PrintToString(notes);
 }
 
 TEST_F(AssessResume, NonEmptyOutputWithoutResumeIsRefused) {

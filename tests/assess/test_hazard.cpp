@@ -604,7 +604,7 @@ TEST_F(Hazard, AResumeByAnotherBuildIsSaid) {
         again.onNote = [&notes](const std::string& n) { notes.push_back(n); };
         runHazard(again);
         return std::count_if(notes.begin(), notes.end(), [](const std::string& n) {
-            return n.find("its runs were made by sylvarock build 0123abcd; this is sylvarock build") != std::string::npos;
+            return n.find("its runs were made by sylvarock build 0123abcd, this is sylvarock build") != std::string::npos;
         });
     };
     EXPECT_EQ(notesOfResume(), 0);

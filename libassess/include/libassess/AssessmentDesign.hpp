@@ -35,6 +35,8 @@ struct AssessmentDesign {
     int lumpedBaselineRuns = 3000;  // lumped runs without forest (the paper's Table 1 calibration count)
 };
 
+// Whether the design runs `model` at all (the other model's run counts then mean nothing).
+bool usesModel(const AssessmentDesign& design, dem::Model model);
 // Block runs per forest realisation, and without forest, of one model.
 int runsPerRealisation(const AssessmentDesign& design, dem::Model model);
 int baselineRuns(const AssessmentDesign& design, dem::Model model);

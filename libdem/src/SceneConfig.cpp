@@ -135,7 +135,7 @@ SceneKeys::SceneKeys(StemParameterSet set) : parameterSet(name(set)) {
     k.optionalOther("terrain.dtm", t.dtm, "or a DTM as an ESRI ASCII grid (.asc)");
     k.optionalOther("forest.file", c.forestFile, "forest CSV (from sylvarock generate, or x,y,dbh_cm[,stool]); relative to the scene file");
     k.number("terrain.width_m", t.soil.width, aboveUpTo(0, 5000, "m", "", "the soil bed covers the whole width: a valley-wide strip would not fit in memory"), "extent across the slope of a profile terrain");
-    k.number("terrain.soil_radius_m", t.soil.radius, aboveUpTo(0.01, 10, "m", "", "cm typed as m?"), "R_soil (Table 2: 0.7)");
+    k.number("terrain.soil_radius_m", t.soil.radius, aboveUpTo(0.01, 10, "m", "", "cm typed as m?"), "R_soil (Sect. 2.1.1: 0.7)");
     k.number("terrain.roughness_m", t.soil.roughness, aboveUpTo(0, 10, "m", "", "cm typed as m?"), "bump height between soil spheres (Table 2: 0.1)");
     k.other("terrain.seed", t.soil.seed, "seed of the rows' offsets across the slope (Fig. 7) and of a DTM's micro-topography");
     k.number("terrain.microtopography_m", t.micro.sigma, closed(0, 10, "m", "", "cm typed as m?"),

@@ -24,7 +24,7 @@ void apply(StemParameterSet set, StemParams& stem, StemContactParams& contact) {
     stem.bending.damping = StemDamping::ConstantLoss;   // "Damping": wood's loss factor
     contact.crushingStrength = 3.7e6;                   // "Crushing": green beech across the grain
     stem.root.anchorage = RootAnchorage::StemWeight;    // "Anchorage": M_a = C_reg x stem mass
-    stem.root.failureRotation = 25 * std::acos(-1.0) / 180;  // "Anchorage": the plate lets go
+    stem.root.failureRotation = 25 * std::acos(-1.0) / 180;  // "The root plate lets go"
     stem.axialSoftening = 2;                            // "Time step": the axial springs softened
 }
 

@@ -14,7 +14,7 @@
 namespace sylva::dem {
 
 struct SoilBedParams {
-    double radius = 0.7;      // R_soil, m (Table 2: spheres of 1.4 m diameter)
+    double radius = 0.7;      // R_soil, m (Sect. 2.1.1: spheres of 1.4 m diameter)
     double roughness = 0.1;   // bump height between neighbours, m; sets the spacing (model-notes.md)
     double width = 200.0;     // extent across the slope (profile terrains), m; y in [0, width]
     std::uint64_t seed = 1;   // row offsets across the slope (Fig. 7)

@@ -171,15 +171,18 @@ TEST(ExtremeStems, ThinStemBreaksUnderTheBlock) {
 }
 
 // Its connections would need to turn past pi before Fig. 3 breaks them; they snap once folded at a
-// right angle (Stem, kFoldedConnection).
-TEST(ExtremeStems, ThinStemWithCoarseNodesBreaksOrStopsNamingTheNodes) {
-    const RunResult r = run(singleTree({"tree.dbh_cm=5", "stem.node_spacing_m=2"}));
-    // Sound (below the warning level, so not flagged), but not held to the 1 % of a resolved stem:
-    // a connection that snaps releases at once what a fine stem gives back over several steps.
+// right angle (Stem, kFoldedConnection). The paper's stems (toe2018) are the ones that fold so: the
+// calibrated default's sections and crushing never take a connection of this stem past pi/2, so on
+// them the test would pass without the snap (without it, toe2018 gains +8.4 MJ in one step).
+TEST(ExtremeStems, ThinStemWithCoarseNodesSnapsWhereItFoldsAndKeepsItsBudget) {
+    const RunResult r = run(singleTree({"stem.parameters=toe2018", "tree.dbh_cm=5", "stem.node_spacing_m=2"}));
     expectSound(r, "5 cm stem, 2 m nodes");
     std::printf("5 cm stem, 2 m nodes: energy imbalance %.2f %%\n", 100 * r.energy.imbalance);
     ASSERT_EQ(r.impacts.size(), 1u);
     EXPECT_TRUE(r.impacts[0].stemBroken);
+    // The bar for a single-tree impact (TreeImpact.EnergyBudgetClosesWithinOnePercent): a
+    // snap books the energy it releases as rupture, so the account closes as a resolved stem's does.
+    EXPECT_LT(r.energy.imbalance, 0.01);
 }
 
 // 10 m3 (27 t) and 0.01 m3 (27 kg): Eq. 16 scales each dashpot with sqrt(K_n m_b), so the
@@ -562,7 +565,6 @@ TEST(ExtremeEnergyAudit, RunsAboveTheWarningLevelAreFlaggedInTheOutput) {
 
 TEST(ExtremeEnergyAudit, GrowthAboveTheToleranceStopsTheRunNamingWhereItAppeared) {
     // A tolerance of 1e-6 trips at once on the leapfrog's offset in free flight, on the block's side.
-    // (ThinStemWithCoarseNodesBreaksOrStopsNamingTheNodes checks a growth in the stems.)
     const std::string m = messageOf<SimulationError>([] { run(flatGround({"integration.energy_tolerance=1e-6"})); });
     EXPECT_TRUE(mentions(m, "energy grew without a source") && mentions(m, "the block, soil and their contacts gained") &&
                 mentions(m, "integration.safety"))

@@ -42,3 +42,31 @@ TEST(ImpactRecorder, OnlyTheStandingStemOpensAnImpact) {
     EXPECT_DOUBLE_EQ(all[0].time, 0.2);
     EXPECT_DOUBLE_EQ(all[0].height, 1.0);
 }
+
+// The block leaves the standing stem ("after" is taken), then the stem's broken top lands on it
+// while the impact is still open: debris, which neither moves "after" nor keeps the impact in contact.
+TEST(ImpactRecorder, DebrisLandingOnTheBlockAfterItLeftDoesNotMoveAfter) {
+    const PlacedTree tree{7, Vec3::Zero(), beechStem(20), StemFoot::RootSpring};
+    const Stem stem(tree.geometry, StemParams{}, tree.foot, tree.support);
+    const ImpactRecorder::StemOf stemOf = [&](std::uint32_t) -> const Stem& { return stem; };
+    RigidBody block = ball();
+    ImpactRecorder r;
+    r.beginStep();
+    r.touch(block, 0, tree, 0, Vec3(0, 0, 1), 0.1, stem);  // the standing stem: the impact opens
+    r.endStep(block, stemOf);
+    block.velocity = Vec3(6, 0, 0);  // slowed by the stem
+    r.beginStep();  // no contact: the block has left, "after" is its state now
+    r.endStep(block, stemOf);
+    const double after = block.kineticEnergy();
+    block.velocity = Vec3(2, 0, 0);  // sliding on, later
+    const std::uint32_t top = 1;
+    for (int step = 0; step < 3; ++step) {  // the top lies on the block for a few steps, then rolls off
+        r.beginStep();
+        if (step < 2) r.touch(block, 0, tree, top, Vec3(0.5, 0, 0.4), 0.9 + 0.01 * step, stem);
+        r.endStep(block, stemOf);
+    }
+    const std::vector<TreeImpact> all = r.finish(block, stemOf);
+    ASSERT_EQ(all.size(), 1u);
+    EXPECT_DOUBLE_EQ(all[0].energyAfter, after);
+    EXPECT_DOUBLE_EQ(all[0].speedAfter, 6.0);
+}

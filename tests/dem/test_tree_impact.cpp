@@ -108,18 +108,21 @@ TEST(TreeImpact, StemBreaksOnlyWhenTheBlockCarriesEnoughEnergy) {
 // The impact's "after" is the block when it leaves the tree. A 15 cm stem hit at 10 m/s breaks;
 // with 0.5 m between its nodes (3 sections per connection) the broken top lands on the block 0.8 s
 // later, while the block slides on the soil: that touch used to move "after" on to 16.9 kJ, against
-// 60.8 kJ at 0.25 m where the top misses. Debris is not the impact: both spacings must now agree
-// within the stem-convergence check's bar (10 % of the energy before).
+// 60.8 kJ at 0.25 m where the top misses. Those are the paper's stems on 3 sections (toe2018): the
+// calibrated default's top never lands on the block while the impact is open, so on it this test
+// would pass with debris counted. Debris is not the impact: both spacings agree to 0.2 % of the
+// energy before; 2 % leaves room for that and fails by far (> 60 %) if the landing is counted.
 TEST(TreeImpact, DebrisFallingOnTheBlockLaterIsNotPartOfTheImpact) {
     const auto impact = [](const std::string& spacing) {
-        const RunResult r = launch({"tree.dbh_cm=15", "block.speed_m_s=10", "stem.sections=3", "stem.node_spacing_m=" + spacing});
+        const RunResult r = launch({"stem.parameters=toe2018", "tree.dbh_cm=15", "block.speed_m_s=10", "stem.sections=3",
+                                    "stem.node_spacing_m=" + spacing});
         EXPECT_EQ(r.impacts.size(), 1u);
         EXPECT_TRUE(r.impacts.at(0).stemBroken);
         return r.impacts.at(0);
     };
     const TreeImpact coarse = impact("0.5"), fine = impact("0.25");
     std::cout << "block after the impact: " << coarse.energyAfter << " J (0.5 m), " << fine.energyAfter << " J (0.25 m)\n";
-    EXPECT_NEAR(coarse.energyAfter, fine.energyAfter, 0.1 * fine.energyBefore);
+    EXPECT_NEAR(coarse.energyAfter, fine.energyAfter, 0.02 * fine.energyBefore);
 }
 
 // A broken top falls on the soil and loses energy in the soil's dashpot there (Eq. 16 on the mass
@@ -133,11 +136,19 @@ TEST(TreeImpact, BrokenPiecesLoseEnergyOnTheSoil) {
     EXPECT_GT(r.forestEnergy.contactDamping, 100.0) << "a falling 14 m top brings kJ to the ground";
     EXPECT_LT(r.energy.imbalance, 0.01);
     // A broken stem sleeps once its pieces rest, not mid-fall: what is frozen then is small next to
-    // what the tree dissipated (issue 11's bar; it was 39 % when the top was frozen mid-air).
+    // what the tree dissipated (issue 11's bar; it was 39 % when the top was frozen mid-air). The
+    // scene never lets a stem rest (forest.return_horizon_s an hour, for the impact's account), so
+    // this is asked of the forest's horizon: there a top frozen mid-fall holds ~57 % of the tree's.
+    {
+        const RunResult resting = launch({"tree.dbh_cm=20", "block.speed_m_s=15", "forest.return_horizon_s=0.1"});
+        const ForestLedger& f = resting.forestEnergy;
+        const double tree = f.bendingPlasticity + f.bendingDamping + f.rootPlasticity + f.rupture;
+        std::cout << "frozen " << f.frozen << " J against the tree's " << tree << " J\n";
+        ASSERT_TRUE(resting.impacts.at(0).stemBroken);
+        EXPECT_LT(f.frozen, 0.05 * tree);
+    }
     const ForestLedger& f = r.forestEnergy;
     const double tree = f.bendingPlasticity + f.bendingDamping + f.rootPlasticity + f.rupture;
-    std::cout << "frozen " << f.frozen << " J against the tree's " << tree << " J\n";
-    EXPECT_LT(f.frozen, 0.05 * tree);
     // Over the impact alone (first contact to the block leaving) the tree's terms are part of the
     // run's: the top's landing comes after.
     const StemLedger& d = r.impacts[0].duringImpact;

@@ -124,9 +124,11 @@ TEST(ModelComparison, EachModelGivesItsResultsAloneInATwoModelAssessment) {
             EXPECT_EQ(together->stands[s].pf50, alone->stands[s].pf50);
             EXPECT_EQ(together->stands[s].pf50Ci.low, alone->stands[s].pf50Ci.low);
             EXPECT_EQ(together->stands[s].pf50Ci.high, alone->stands[s].pf50Ci.high);
-            EXPECT_EQ(together->stands[s].forests.at(0).clarkEvans, both[0].stands[s].forests.at(0).clarkEvans);  // same trees
+            EXPECT_EQ(together->stands[s].forests.at(0).clarkEvans, alone->stands[s].forests.at(0).clarkEvans);  // same trees
         }
     }
+    for (std::size_t s = 0; s < both[0].stands.size(); ++s)  // and both models of one assessment ran through the same trees
+        EXPECT_EQ(both[1].stands[s].forests.at(0).clarkEvans, both[0].stands[s].forests.at(0).clarkEvans);
     EXPECT_EQ(both[1].baseline.size(), 50u);
     EXPECT_EQ(both[1].stands.at(0).runs.at(0).size(), 40u);
     fs::remove_all(root);

@@ -9,8 +9,7 @@ using namespace sylva::dem;
 
 TEST(RigidBody, CubeOfEq1HasTheTrueCubesMassAndInertia) {
     const RigidBody b = makeBlock(BlockSpec{});
-    const double d = std::cbrt(0.5);
-    EXPECT_NEAR(d, 0.794, 5e-4);  // Table 2's D1 (given to 3 decimals)
+    const double d = std::cbrt(0.5);  // 0.7937 m: Table 2's D1 = 0.794 m, given to 3 decimals
     EXPECT_DOUBLE_EQ(b.mass(), 2700 * 0.5);
     for (int i = 0; i < 3; ++i) EXPECT_NEAR(b.principalInertia()[i], b.mass() * d * d / 6, 1e-9);
     ASSERT_EQ(b.spheres().size(), 27u);

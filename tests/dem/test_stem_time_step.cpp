@@ -97,7 +97,7 @@ double wholeStemLimit(const Stem& rest) {
 // The paper's hinge (one section), undamped: its shear spring, in series with nothing, makes a beam
 // element stiffer than the chain's modes use, within 20 %. With Eqs. 7-8's dashpot, which the
 // reference leaves out, the bound is lower still.
-TEST(StemTimeStep, BoundIsTheWholeStemsLimitWithinAFewPerCent) {
+TEST(StemTimeStep, BoundNeverExceedsTheWholeStemsLimitAndIsWithinTwentyPerCentOfIt) {
     for (const double dbh : {10.0, 20.0, 35.0})
         for (const double spacing : {0.5, 0.25})
             for (const StemFoot foot : {StemFoot::Clamped, StemFoot::RootSpring}) {

@@ -82,12 +82,9 @@ TEST(SetCovariance, CombWithCoincidentEdgesEqualsItsRectangles) {
     ring.pop_back();  // (0, 2) closes the ring
     ring.emplace_back(0, 2);
     const TranslationCorrection t(Window::fromWkt(wkt(ring)));
-    int compared = 0;
     for (int dx = -13; dx <= 13; ++dx)
         for (int dy = -7; dy <= 7; ++dy) {
             const Vec v(dx, dy);
             EXPECT_NEAR(t.setCovariance(v), piecewise(rectangles, v), 1e-9) << v.transpose();
-            ++compared;
         }
-    EXPECT_EQ(compared, 27 * 15);
 }

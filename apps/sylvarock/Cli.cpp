@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -24,7 +25,11 @@ std::vector<Command>& table() {
 
 const std::vector<Command>& commands() { return table(); }
 
-CommandRegistration::CommandRegistration(Command c) { table().push_back(std::move(c)); }
+CommandRegistration::CommandRegistration(Command c) {
+    auto& t = table();
+    const auto after = std::upper_bound(t.begin(), t.end(), c.place, [](int place, const Command& d) { return place < d.place; });
+    t.insert(after, std::move(c));
+}
 
 bool parse(int argc, const char* const* argv, const po::options_description& options, po::variables_map& vm,
            const std::string& usage, const std::string& examples) {

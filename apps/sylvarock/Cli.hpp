@@ -10,12 +10,14 @@ namespace sylva::cli {
 namespace po = boost::program_options;
 
 struct Command {
+    int place;            // where it comes in a study, which `sylvarock --help` lists them by
     std::string name;
     std::string summary;  // one line for `sylvarock --help`
     int (*run)(int argc, const char* const* argv);  // argv[0] is the subcommand's name
     bool spreadsOverRanks = false;  // runs under mpirun with several ranks (see libassess/MpiWorld.hpp)
 };
 
+// In the order of their places (registration order is the link order's, which nobody chose).
 const std::vector<Command>& commands();
 
 // A file-scope instance of this in cmd_<name>.cpp puts the subcommand in the table.

@@ -124,7 +124,7 @@ int runAssess(int argc, const char* const* argv) {
     return 0;
 }
 
-const CommandRegistration reg{{"assess", "protection index PF50 of stands with intervals, ranks and correlations", &runAssess, true}};
+const CommandRegistration reg{{4, "assess", "protection index PF50 of stands with intervals, ranks and correlations", &runAssess, true}};
 
 }  // namespace
 }  // namespace sylva::cli

@@ -157,7 +157,7 @@ int runCalibrateLumped(int argc, const char* const* argv) {
     return 0;
 }
 
-const CommandRegistration reg{{"calibrate-lumped", "fit the lumped model's soil on the DEM without forest (as the paper's Table 1)", &runCalibrateLumped}};
+const CommandRegistration reg{{6, "calibrate-lumped", "fit the lumped model's soil on the DEM without forest (as the paper's Table 1)", &runCalibrateLumped}};
 
 }  // namespace
 }  // namespace sylva::cli

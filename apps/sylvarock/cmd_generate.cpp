@@ -133,7 +133,7 @@ int runGenerate(int argc, const char* const* argv) {
     return 0;
 }
 
-const CommandRegistration reg{{"generate", "virtual forest (aggregated A or random NA) over an extent from an inventory", &runGenerate}};
+const CommandRegistration reg{{2, "generate", "virtual forest (aggregated A or random NA) over an extent from an inventory", &runGenerate}};
 
 }  // namespace
 }  // namespace sylva::cli

@@ -115,7 +115,7 @@ int runHazardCommand(int argc, const char* const* argv) {
     return 0;
 }
 
-const CommandRegistration reg{{"hazard", "hazard rasters (reach probability, deposits, energy, height) on a DTM from a release area", &runHazardCommand}};
+const CommandRegistration reg{{5, "hazard", "hazard rasters (reach probability, deposits, energy, height) on a DTM from a release area", &runHazardCommand}};
 
 }  // namespace
 }  // namespace sylva::cli

@@ -128,7 +128,7 @@ int runScene(int argc, const char* const* argv) {
     return 0;
 }
 
-const CommandRegistration reg{{"scene", "export a scene's spheres (soil, block) and stems for ParaView or another DEM code", &runScene}};
+const CommandRegistration reg{{7, "scene", "export a scene's spheres (soil, block) and stems for ParaView or another DEM code", &runScene}};
 
 }  // namespace
 }  // namespace sylva::cli

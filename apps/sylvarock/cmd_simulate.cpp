@@ -228,7 +228,7 @@ int runSimulate(int argc, const char* const* argv) {
     return 0;
 }
 
-const CommandRegistration reg{{"simulate", "run blocks down a slope (Monte Carlo, in parallel)", &runSimulate, true}};
+const CommandRegistration reg{{3, "simulate", "run blocks down a slope (Monte Carlo, in parallel)", &runSimulate, true}};
 
 }  // namespace
 }  // namespace sylva::cli

@@ -168,7 +168,7 @@ int runStats(int argc, const char* const* argv) {
 }
 
 const CommandRegistration reg{
-    {"stats", "stand statistics (N, G, DBH, stools, Clark-Evans, g(r)) of an inventory or a pattern", &runStats}};
+    {1, "stats", "stand statistics (N, G, DBH, stools, Clark-Evans, g(r)) of an inventory or a pattern", &runStats}};
 
 }  // namespace
 }  // namespace sylva::cli

@@ -13,7 +13,9 @@ namespace {
 
 void printUsage(std::ostream& os) {
     os << "usage: sylvarock <command> [options]   (sylvarock <command> --help for each command's options)\n\n"
-          "How well does a mountain forest protect what lies below it from rockfall?\n\nCommands:\n";
+          "How well does a mountain forest protect what lies below it from rockfall? A study describes its\n"
+          "stands (stats), draws virtual forests from them (generate), runs blocks through them (simulate)\n"
+          "and ranks the stands by their protection (assess); on a real slope, hazard maps it.\n\nCommands:\n";
     std::size_t width = 0;
     for (const auto& c : sylva::cli::commands()) width = std::max(width, c.name.size());
     for (const auto& c : sylva::cli::commands()) os << "  " << c.name << std::string(width + 2 - c.name.size(), ' ') << c.summary << "\n";

@@ -17,7 +17,7 @@ echo "   their g(r) against the inventory's (out/GR1-A-figures/, out/GR1-NA-figu
   --extent 130,0,630,200 --seed 1 --out out/GR1-NA.csv --plot-dir out/GR1-NA-figures
 echo "== 100 blocks down the stand-in slope without forest (out/no-forest/)"
 "$exe" simulate --scene data/scenes/no-forest.ini --runs 100 --seed 1 --out out/no-forest
-echo "== PF50 of stands GR1 and PY1, aggregated (A) and random (NA): a small campaign, ~2.5 min on 2 cores (out/assess/)"
+echo "== PF50 of stands GR1 and PY1, aggregated (A) and random (NA): a small campaign, ~30 s on 2 cores (out/assess/)"
 echo "   (15 runs x 2 forests per stand and structure: wide intervals; the paper's design is --runs 100 --realisations 5)"
 # --resume: a second run of this script finishes or reuses the campaign instead of refusing out/assess.
 "$exe" assess --stand data/stands/GR1 --stand data/stands/PY1 --scene data/scenes/no-forest.ini \

@@ -50,21 +50,30 @@ void drawFigures(const std::string& dir, const dem::Scene& scene, const std::vec
 }
 
 
-// The files a simulate run writes. An earlier run's are removed before a new one writes, so that the
-// folder never mixes two runs (a forested run's impacts.csv and figures beside a bare run's runs.csv
-// were left as they were); another command's folder is refused, as its outputs would be overwritten.
-const char* const kSimulateOutputs[] = {"runs.csv",        "summary.json",  "impacts.csv", "energy.json",
-                                        "runout_cdf.csv",  "runout_cdf.svg", "stop_map.svg", "trajectories"};
+// The files a simulate run writes (and its trajectories/ folder). An earlier run's are removed before a
+// new one writes, so that the folder never mixes two runs (a forested run's impacts.csv and figures
+// beside a bare run's runs.csv were left as they were). An earlier run is known by its runs.csv; files
+// of these names without it are someone else's, and another command's folder is refused too: simulate
+// would overwrite them (it once deleted a user's summary.json and trajectories/ in --out .).
+const char* const kSimulateOutputs[] = {"runs.csv",       "summary.json",   "impacts.csv",  "energy.json",
+                                        "runout_cdf.csv", "runout_cdf.svg", "stop_map.svg", "trajectories"};
 
 void prepareOutFolder(const std::string& dir) {
     namespace fs = std::filesystem;
     if (fs::exists(dir) && !fs::is_directory(dir)) throw InputError("--out " + dir + " is a file, not a folder");
+    const auto refuse = [&](const std::string& what) {
+        throw InputError("--out " + dir + " holds " + what + ": simulate would overwrite it; give simulate a folder of its own");
+    };
     for (const auto& [store, command] : {std::pair{"campaign.sqlite", "assess"}, std::pair{"hazard.sqlite", "hazard"}})
-        if (fs::exists(fs::path(dir) / store))
-            throw InputError("--out " + dir + " holds a sylvarock " + command + " result (" + store +
-                             "): simulate would overwrite its files; give it a folder of its own");
+        if (fs::exists(fs::path(dir) / store)) refuse(std::string("a sylvarock ") + command + " result (" + store + ")");
+    const bool earlierRun = dem::isRunsCsv((fs::path(dir) / "runs.csv").string());
     bool replaced = false;
-    for (const char* name : kSimulateOutputs) replaced = fs::remove_all(fs::path(dir) / name) > 0 || replaced;
+    for (const std::string name : kSimulateOutputs) {
+        const fs::path path = fs::path(dir) / name;
+        if (!fs::exists(path)) continue;
+        if (!earlierRun) refuse(name + (name == "trajectories" ? "/" : "") + ", and no runs.csv of an earlier simulate run beside it");
+        replaced = (name == "trajectories" ? dem::removeTrajectories(path.string()) : fs::remove(path)) || replaced;
+    }
     if (replaced) std::cerr << "--out " << dir << ": the earlier simulate run's outputs are replaced\n";
     fs::create_directories(dir);
 }

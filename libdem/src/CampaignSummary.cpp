@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 
 #include "libcommon/InputError.hpp"
 
@@ -73,10 +74,21 @@ std::ofstream openOut(const std::string& path) {
 }
 }  // namespace
 
+namespace {
+const char* const kRunsHeader =
+    "run,seed,release_x,release_y,release_z,stop_x,stop_y,stop_z,runout_m,runout_horizontal_m,energy_line_deg,"
+    "stop_reason,max_speed_m_s,mean_speed_m_s,max_bounce_m,duration_s,cpu_s,steps,mean_dt_s,energy_imbalance,tree_impacts,energy_flag";
+}  // namespace
+
+bool isRunsCsv(const std::string& path) {
+    std::ifstream in(path);
+    std::string first;
+    return in && std::getline(in, first) && first == kRunsHeader;
+}
+
 void writeRunsCsv(const std::string& path, const std::vector<RunResult>& runs) {
     auto out = openOut(path);
-    out << "run,seed,release_x,release_y,release_z,stop_x,stop_y,stop_z,runout_m,runout_horizontal_m,energy_line_deg,"
-           "stop_reason,max_speed_m_s,mean_speed_m_s,max_bounce_m,duration_s,cpu_s,steps,mean_dt_s,energy_imbalance,tree_impacts,energy_flag\n";
+    out << kRunsHeader << "\n";
     char buf[512];
     for (const auto& r : runs) {
         std::snprintf(buf, sizeof buf,
@@ -189,6 +201,18 @@ void writeSummaryJson(const std::string& path, const CampaignSummary& s, double 
     j["left_vibrating_share_of_tree_terms"] = f.frozen / terms;
     j["left_in_standing_stems_share_of_tree_terms"] = (f.frozen - f.frozenPieces) / terms;
     openOut(path) << j.dump(2) << "\n";
+}
+
+bool removeTrajectories(const std::string& dir) {
+    namespace fs = std::filesystem;
+    if (!fs::is_directory(dir)) return false;
+    const std::regex written(R"(run_\d{4,}\.(csv|vtk))");
+    bool removed = false;
+    for (const auto& entry : fs::directory_iterator(dir))
+        if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), written))
+            removed = fs::remove(entry.path()) || removed;
+    if (fs::is_empty(dir)) fs::remove(dir);
+    return removed;
 }
 
 void writeTrajectories(const std::string& dir, const std::vector<RunResult>& runs) {

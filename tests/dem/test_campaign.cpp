@@ -118,10 +118,12 @@ TEST(SimulateCli, AnEarlierRunsOutputsAreReplacedAndAnotherCommandsFolderRefused
     std::ofstream(out / "impacts.csv") << "run,tree\n0,1\n";  // as a forested run leaves it
     std::ofstream(out / "notes.txt") << "mine\n";
     ASSERT_TRUE(std::filesystem::exists(out / "trajectories" / "run_0001.csv"));
+    std::ofstream(out / "trajectories" / "field-survey.gpx") << "mine\n";
     ASSERT_EQ(cli(base + "--runs 1 --out " + out.string()), 0);
     EXPECT_FALSE(std::filesystem::exists(out / "impacts.csv"));
-    EXPECT_FALSE(std::filesystem::exists(out / "trajectories"));
+    EXPECT_FALSE(std::filesystem::exists(out / "trajectories" / "run_0001.csv"));
     EXPECT_TRUE(std::filesystem::exists(out / "notes.txt")) << "a file simulate does not write is left alone";
+    EXPECT_TRUE(std::filesystem::exists(out / "trajectories" / "field-survey.gpx")) << "in trajectories/ too";
     const std::string runs = slurp((out / "runs.csv").string());
     EXPECT_EQ(std::count(runs.begin(), runs.end(), '\n'), 2);
     // A bad option leaves the earlier outputs where they were.
@@ -131,6 +133,18 @@ TEST(SimulateCli, AnEarlierRunsOutputsAreReplacedAndAnotherCommandsFolderRefused
     std::ofstream(out / "hazard.sqlite") << "";
     EXPECT_EQ(cli(base + "--runs 1 --out " + out.string()), 2 << 8);  // an input error
     EXPECT_TRUE(std::filesystem::exists(out / "runs.csv"));
+
+    // Files of simulate's names that no earlier simulate run wrote (no runs.csv of its own) are the
+    // user's: refused, left as they were.
+    const auto theirs = out.parent_path() / "simulate-theirs";
+    std::filesystem::remove_all(theirs);
+    std::filesystem::create_directories(theirs / "trajectories");
+    std::ofstream(theirs / "summary.json") << "{\"mine\": 1}\n";
+    std::ofstream(theirs / "trajectories" / "events.gpx") << "mine\n";
+    EXPECT_EQ(cli(base + "--runs 1 --out " + theirs.string()), 2 << 8);
+    EXPECT_EQ(slurp((theirs / "summary.json").string()), "{\"mine\": 1}\n");
+    EXPECT_TRUE(std::filesystem::exists(theirs / "trajectories" / "events.gpx"));
+    EXPECT_FALSE(std::filesystem::exists(theirs / "runs.csv"));
 }
 
 // --only-run runs one run of a campaign again, seeded as in the whole campaign: its row is the

@@ -32,6 +32,9 @@ CampaignSummary summarise(const std::vector<RunResult>& runs);
 double quantile(std::vector<double> values, double p);
 
 void writeRunsCsv(const std::string& path, const std::vector<RunResult>& runs);
+// Whether the file at path is one writeRunsCsv wrote (its header line): how an earlier simulate run's
+// folder is told from a folder of someone else's files.
+bool isRunsCsv(const std::string& path);
 // The energy budget of a single-tree launch (a tree-mechanics check): the block's kinetic energy
 // before and after the impact, each dissipation term, whether the stem broke or the root yielded.
 void writeImpactEnergyJson(const std::string& path, const RunResult& run);
@@ -39,7 +42,9 @@ void writeImpactEnergyJson(const std::string& path, const RunResult& run);
 void writeImpactsCsv(const std::string& path, const std::vector<RunResult>& runs);
 void writeSummaryJson(const std::string& path, const CampaignSummary& s, double wallSeconds, const std::string& scene);
 // One CSV per run (t,x,y,z,vx,vy,vz,wx,wy,wz,ek_translation_j,ek_rotation_j) and one legacy VTK
-// polyline per run (ParaView), in dir.
+// polyline per run (ParaView), in dir, named run_NNNN.csv and run_NNNN.vtk.
 void writeTrajectories(const std::string& dir, const std::vector<RunResult>& runs);
+// Removes what writeTrajectories wrote in dir, and dir if nothing else is left in it; true if it removed any.
+bool removeTrajectories(const std::string& dir);
 
 }  // namespace sylva::dem

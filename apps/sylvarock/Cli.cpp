@@ -75,6 +75,7 @@ bool parse(int argc, const char* const* argv, const po::options_description& opt
 }
 
 void validate(boost::any& v, const std::vector<std::string>& tokens, Seed*, int) {
+    po::validators::check_first_occurrence(v);  // as Boost's own validators do: a second --seed is refused
     const std::string& t = po::validators::get_single_string(tokens);
     errno = 0;
     char* end = nullptr;

@@ -177,10 +177,12 @@ TEST(SimulateCli, BadSceneKeyIsRefusedWithItsName) {
 
 // program_options reads "-1" into an unsigned seed as 2^64 - 1 and into --threads as a count: both
 // would run, on a seed or a thread count the user never gave (issue 13).
-TEST(SimulateCli, NegativeSeedsAndThreadCountsAreRefused) {
+// A seed decides every result: one given twice (a wrapper appending its default) is refused as
+// every other repeated option is, not read as the last one.
+TEST(SimulateCli, NegativeRepeatedSeedsAndThreadCountsAreRefused) {
     const std::string base = std::string("simulate --scene ") + SYLVAROCK_DATA + "/scenes/no-forest.ini --runs 1 --no-figures ";
     const auto out = std::filesystem::temp_directory_path() / "sylvarock-tests" / "simulate-seed";
-    for (const char* bad : {"--seed -1", "--seed 1.5", "--seed 18446744073709551616", "--threads -1"}) {
+    for (const char* bad : {"--seed -1", "--seed 1.5", "--seed 18446744073709551616", "--threads -1", "--seed 1 --seed 2"}) {
         std::filesystem::remove_all(out);
         EXPECT_NE(cli(base + bad + " --out " + out.string()), 0) << bad;
         EXPECT_FALSE(std::filesystem::exists(out / "runs.csv")) << bad;

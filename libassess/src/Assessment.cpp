@@ -8,6 +8,7 @@
 #include "libassess/CampaignStore.hpp"
 #include "libassess/MpiWorld.hpp"
 #include "libdem/SceneConfig.hpp"
+#include "libdem/TreeField.hpp"
 #include "libcommon/InputError.hpp"
 #include "libstand/Inventory.hpp"
 #include "libstand/StandCatalogue.hpp"
@@ -40,6 +41,7 @@ Inputs readInputs(const AssessmentOptions& options, const std::function<void(con
     for (const auto& s : design.stands) {
         stand::Inventory inventory = stand::readInventory(s.stemsCsv, s.plotsCsv);
         inventory.name = s.name;
+        dem::requireBuildableStems(inventory, s.stemsCsv, sceneConfig.stem.tipDiameter);  // before the store is made
         for (const auto& w : inventory.warnings) note("stand " + s.name + ": warning: " + w);
         // Its forests draw their density, diameters and aggregation from these stems alone.
         constexpr std::size_t kFewStems = 10;

@@ -353,7 +353,7 @@ HazardResults runHazard(const HazardOptions& o) {
     stand::Forest forest;
     if (!o.treesPath.empty()) forest = readTreePoints(o.treesPath, dtm);
     if (!o.standsPath.empty()) {
-        StandForest stands = readStandPolygons(o.standsPath, dtm, o.seed);
+        StandForest stands = readStandPolygons(o.standsPath, dtm, o.seed, config.stem.tipDiameter);
         for (const auto& n : stands.notes)
             if (o.onNote) o.onNote(n);
         forest = std::move(stands.forest);

@@ -99,7 +99,7 @@ private:
 
 }  // namespace
 
-StandForest readStandPolygons(const std::string& path, const Dtm& dtm, std::uint64_t seed) {
+StandForest readStandPolygons(const std::string& path, const Dtm& dtm, std::uint64_t seed, double tipDiameter) {
     GDALDatasetUniquePtr ds = openVectorFile(path);
     const Eigen::Vector2d lo = dtm.grid.centre(0, dtm.grid.rows - 1), hi = dtm.grid.centre(dtm.grid.columns - 1, 0);
     OGRPolygon terrain;
@@ -163,6 +163,7 @@ StandForest readStandPolygons(const std::string& path, const Dtm& dtm, std::uint
             if (!catalogue) {
                 const stand::Inventory inventory = stand::readInventory(s.inventory + "_stems.csv", s.inventory + "_plots.csv");
                 for (const auto& w : inventory.warnings) out.notes.push_back(w);
+                dem::requireBuildableStems(inventory, s.inventory + "_stems.csv", tipDiameter);
                 catalogue = std::make_unique<stand::StandCatalogue>(inventory, s.inventory + "_stems.csv");
             }
             for (const OGRPolygon* p : polygonsOf(*cut)) {

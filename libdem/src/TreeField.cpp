@@ -8,6 +8,23 @@
 
 namespace sylva::dem {
 
+namespace {
+
+std::string tooThin(double dbhCm, double tipDiameter) {
+    return "a DBH of " + readableNumber(dbhCm) + " cm is below the stems' tip diameter (stem.tip_diameter_m = " +
+           readableNumber(tipDiameter * 100) + " cm), so it cannot be built as a stem";
+}
+
+}  // namespace
+
+void requireBuildableStems(const stand::Inventory& inventory, const std::string& stemsCsv, double tipDiameter) {
+    for (const stand::Stem& s : inventory.stems)
+        if (s.dbhCm > 0 && s.dbhCm / 100 < tipDiameter)  // 0: below breast height, left out; NaN: refused where drawn
+            throw InputError(stemsCsv, s.line,
+                             "stem '" + s.id + "': " + tooThin(s.dbhCm, tipDiameter) +
+                                 ": give 0 for a stem below breast height (it is left out), or lower stem.tip_diameter_m");
+}
+
 TreeField::TreeField(const stand::Forest& forest, const SoilBed& soil, double tipDiameter) {
     if (forest.trees.empty()) return;
     double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
@@ -24,10 +41,8 @@ TreeField::TreeField(const stand::Forest& forest, const SoilBed& soil, double ti
         // forest that cannot be built fails before any run, whatever the seed.
         if (!(t.dbhCm / 100 >= tipDiameter))
             throw InputError(forest.source, t.line,
-                             (forest.source.empty() ? "forest: " : "") + std::string("stem ") + std::to_string(t.id) + ": a DBH of " +
-                                 readableNumber(t.dbhCm) + " cm is below the stems' tip diameter (stem.tip_diameter_m = " +
-                                 readableNumber(tipDiameter * 100) +
-                                 " cm), so it cannot be built as a stem: leave such stems out of the forest, or lower stem.tip_diameter_m");
+                             (forest.source.empty() ? "forest: " : "") + std::string("stem ") + std::to_string(t.id) + ": " +
+                                 tooThin(t.dbhCm, tipDiameter) + ": leave such stems out of the forest, or lower stem.tip_diameter_m");
         StemGeometry g;
         g.dbh = t.dbhCm / 100;
         g.height = t.heightM;

@@ -155,6 +155,14 @@ TEST_F(AssessCli, BadInputsAreClearErrors) {
     EXPECT_NE(err_.find("--lumped-runs must be at least 1"), std::string::npos) << err_;
     EXPECT_EQ(run(smallCampaign("o", 1000000000)), 2);
     EXPECT_NE(err_.find("--runs 1000000000 is above 10000000: a typo?"), std::string::npos) << err_;
+    // A stem thinner than the stems' tip diameter (1 cm) cannot be built: named by its inventory line
+    // (it was a virtual stem of the first forest, after the store and the runs without forest).
+    std::ofstream(root_ / "THIN_stems.csv") << "plot,stem,x,y,dbh_cm,species,stool\n1,1,10,10,20,beech,\n1,2,30,30,0.5,beech,\n";
+    std::ofstream(root_ / "THIN_plots.csv") << "plot,xmin,ymin,xmax,ymax\n1,0,0,50,50\n";
+    EXPECT_EQ(run("--stand " + (root_ / "THIN").string() + " --scene " + std::string(SYLVAROCK_TEST_DATA) +
+                  "/../assess/data/short-scene.ini --runs 2 --realisations 1 --baseline-runs 2 --out " + (root_ / "o").string()),
+              2);
+    EXPECT_NE(err_.find("THIN_stems.csv:3: stem '2': a DBH of 0.5 cm is below the stems' tip diameter"), std::string::npos) << err_;
     EXPECT_FALSE(fs::exists(root_ / "o"));  // nothing is written before the inputs are known to be good
 }
 

@@ -36,6 +36,8 @@ namespace stand = sylva::stand;
 
 namespace {
 
+constexpr double kTip = 0.01;  // m, the stems' tip diameter of the default parameters
+
 class Hazard : public GeoTestFolder {
 protected:
     // An ESRI ASCII DTM: `cols` x `rows` cells of `cell` m, south-west corner (x0, y0), height z(col, row)
@@ -833,7 +835,7 @@ TEST_F(StandPolygons, EachPolygonHoldsItsStandsForest) {
         stands({{"{\"stand\": \"" + mo1() + "\", \"structure\": \"A\"}", {{{10, 10}, {150, 10}, {150, 190}, {10, 190}, {10, 10}}}},
                 {"{\"stand\": \"" + gr1() + "\", \"structure\": \"NA\"}",
                  {{{150, 10}, {290, 10}, {290, 190}, {150, 190}, {150, 10}}, {{200, 80}, {240, 80}, {240, 120}, {200, 120}, {200, 80}}}}});
-    const StandForest f = readStandPolygons(file, d, 7);
+    const StandForest f = readStandPolygons(file, d, 7, kTip);
     ASSERT_EQ(f.polygons.size(), 2u);
     EXPECT_EQ(f.polygons[0].structure, stand::ForestStructure::Aggregated);
     EXPECT_EQ(f.polygons[1].structure, stand::ForestStructure::Random);
@@ -863,7 +865,7 @@ TEST_F(StandPolygons, EachPolygonHoldsItsStandsForest) {
     for (const auto& t : f.forest.trees) stools += t.stool.has_value() && t.id <= f.polygons[0].stems;
     EXPECT_GT(stools, f.polygons[0].stems / 4);
 
-    const StandForest again = readStandPolygons(file, d, 7), other = readStandPolygons(file, d, 8);
+    const StandForest again = readStandPolygons(file, d, 7, kTip), other = readStandPolygons(file, d, 8, kTip);
     ASSERT_EQ(again.forest.trees.size(), f.forest.trees.size());
     for (std::size_t i = 0; i < f.forest.trees.size(); ++i) ASSERT_EQ(again.forest.trees[i].x, f.forest.trees[i].x);
     EXPECT_NE(other.forest.trees.front().x, f.forest.trees.front().x);
@@ -874,7 +876,7 @@ TEST_F(StandPolygons, EachPolygonHoldsItsStandsForest) {
 TEST_F(StandPolygons, PolygonsAreCutToTheTerrainAndInventoriesFoundBesideTheFile) {
     const Dtm d = readDtm(flat());
     for (const char* tail : {"_stems.csv", "_plots.csv"}) fs::copy_file(mo1() + tail, dir_ / (std::string("MO1") + tail));
-    const StandForest f = readStandPolygons(stands({{"{\"stand\": \"MO1\"}", {{{-50, -50}, {100, -50}, {100, 250}, {-50, 250}, {-50, -50}}}}}), d, 1);
+    const StandForest f = readStandPolygons(stands({{"{\"stand\": \"MO1\"}", {{{-50, -50}, {100, -50}, {100, 250}, {-50, 250}, {-50, -50}}}}}), d, 1, kTip);
     ASSERT_EQ(f.polygons.size(), 1u);
     EXPECT_NEAR(f.polygons[0].areaHa, 97.5 * 195 / 1e4, 1e-9);
     EXPECT_EQ(fs::path(f.polygons[0].inventory).filename(), "MO1");
@@ -888,7 +890,7 @@ TEST_F(StandPolygons, BadStandsSayWhatIsWrong) {
     const Dtm d = readDtm(flat());
     const std::vector<std::vector<std::pair<double, double>>> square{{{10, 10}, {100, 10}, {100, 100}, {10, 100}, {10, 10}}};
     const auto error = [&](const std::string& properties, const std::vector<std::vector<std::pair<double, double>>>& rings) {
-        return errorOf([&] { readStandPolygons(stands({{properties, rings}}), d, 1); });
+        return errorOf([&] { readStandPolygons(stands({{properties, rings}}), d, 1, kTip); });
     };
     EXPECT_NE(error("{\"name\": \"x\"}", square).find("no field `stand`"), std::string::npos);
     EXPECT_NE(error("{\"stand\": \"nowhere/XX\"}", square).find("stand 'nowhere/XX' has no inventory"), std::string::npos);
@@ -897,9 +899,15 @@ TEST_F(StandPolygons, BadStandsSayWhatIsWrong) {
               std::string::npos);
     const std::string overlapping = stands({{"{\"stand\": \"" + mo1() + "\"}", square},
                                             {"{\"stand\": \"" + gr1() + "\"}", {{{90, 10}, {200, 10}, {200, 100}, {90, 100}, {90, 10}}}}});
-    EXPECT_NE(errorOf([&] { readStandPolygons(overlapping, d, 1); }).find("overlaps feature 1 by 900 m2"), std::string::npos);
-    EXPECT_NE(errorOf([&] { readStandPolygons(write("points.geojson", "{\"type\": \"FeatureCollection\", \"features\": []}"), d, 1); })
+    EXPECT_NE(errorOf([&] { readStandPolygons(overlapping, d, 1, kTip); }).find("overlaps feature 1 by 900 m2"), std::string::npos);
+    EXPECT_NE(errorOf([&] { readStandPolygons(write("points.geojson", "{\"type\": \"FeatureCollection\", \"features\": []}"), d, 1, kTip); })
                   .find("no polygon"),
+              std::string::npos);
+    // A stem thinner than the stems' tip diameter: named by its inventory line, not as a virtual stem.
+    write("THIN_stems.csv", "plot,stem,x,y,dbh_cm,species,stool\n1,1,10,10,20,beech,\n1,2,30,30,0.5,beech,\n");
+    write("THIN_plots.csv", "plot,xmin,ymin,xmax,ymax\n1,0,0,50,50\n");
+    EXPECT_NE(error("{\"stand\": \"" + (dir_ / "THIN").string() + "\"}", square)
+                  .find("THIN_stems.csv:3: stem '2': a DBH of 0.5 cm is below the stems' tip diameter"),
               std::string::npos);
     HazardOptions o;
     o.dtmPath = flat();
@@ -923,7 +931,7 @@ TEST_F(StandPolygons, SummaryGivesEachStandsSeedAsAString) {
     runHazard(o);
     std::ifstream in(dir_ / "seeds/summary.json");
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const std::uint64_t seed = readStandPolygons(o.standsPath, readDtm(o.dtmPath), o.seed).polygons.at(0).seed;
+    const std::uint64_t seed = readStandPolygons(o.standsPath, readDtm(o.dtmPath), o.seed, kTip).polygons.at(0).seed;
     EXPECT_GT(seed, std::uint64_t(1) << 53) << "a seed a double holds exactly would not show the rounding";
     EXPECT_NE(text.find("\"seed\": \"" + std::to_string(seed) + "\""), std::string::npos) << text;
 }

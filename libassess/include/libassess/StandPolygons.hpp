@@ -36,7 +36,8 @@ struct StandForest {
 // a later polygon that would overlap an earlier one's at a shared border are dropped.
 // InputError naming the file and the feature for: unreadable file, no polygon, a CRS other than the
 // DTM's, a missing or unknown stand, an unknown structure, a polygon outside the terrain, two polygons
-// overlapping (by more than 1 m2), and the generator's own errors (a polygon too small for a stool).
-StandForest readStandPolygons(const std::string& path, const Dtm& dtm, std::uint64_t seed);
+// overlapping (by more than 1 m2), the generator's own errors (a polygon too small for a stool), and an
+// inventory stem thinner than the stems' tip diameter (m), named by its line.
+StandForest readStandPolygons(const std::string& path, const Dtm& dtm, std::uint64_t seed, double tipDiameter);
 
 }  // namespace sylva::assess

@@ -9,6 +9,7 @@
 #include "libdem/Stem.hpp"
 #include "libdem/Terrain.hpp"
 #include "libstand/Forest.hpp"
+#include "libstand/Inventory.hpp"
 
 namespace sylva::dem {
 
@@ -18,6 +19,11 @@ struct PlacedTree {
     StemGeometry geometry;   // H_T, DBH, L_C, m_C (Eqs. 11-13)
     StemFoot support;        // coppice stems clamped, single trees on the root spring
 };
+
+// The same rule on an inventory the forests will be drawn from (assess, hazard --stands): a measured
+// stem thinner than the tip diameter (m) is refused with its line in `stemsCsv`, before any forest is
+// drawn or run stored, rather than as a virtual stem of the first forest that draws it.
+void requireBuildableStems(const stand::Inventory& inventory, const std::string& stemsCsv, double tipDiameter);
 
 class TreeField {
 public:

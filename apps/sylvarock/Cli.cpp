@@ -62,6 +62,7 @@ bool parse(int argc, const char* const* argv, const po::options_description& opt
     }
     if (vm.count("config")) {
         const std::string path = vm["config"].as<std::string>();
+        if (std::filesystem::is_directory(path)) throw InputError(path, 0, "is a folder, not a config file");
         std::ifstream in(path);
         if (!in) throw InputError(path, 0, "cannot open config file");
         try {

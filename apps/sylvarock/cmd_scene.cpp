@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <iomanip>
 #include <iostream>
 #include <vector>
@@ -106,11 +107,17 @@ int runScene(int argc, const char* const* argv) {
                "at rest, one row per node from the foot (node 0) up: tree,node,x,y,z,radius (m),\n"
                "linked_to (the node below, -1 at the foot),dbh_cm,stool (empty for a stem on its own roots)\n"))
         return 0;
+    if (vm.count("action") && vm["action"].as<std::string>() != "export")
+        throw InputError("unknown scene action '" + vm["action"].as<std::string>() + "' (try: export)");
     if (!vm.count("scene") || !vm.count("out")) throw InputError("--scene and --out are required");
     applyForestOption(vm, sets);
     const std::string out = vm["out"].as<std::string>();
     const long run = vm["run"].as<long>();
-    if (run < 0) throw InputError("--run must be 0 or more (the run of the campaign whose release is written)");
+    // A campaign's runs are numbered by an int (--runs): a larger number would wrap to another run's release.
+    if (run < 0 || run > std::numeric_limits<int>::max())
+        throw InputError("--run " + std::to_string(run) + " is not a run of a campaign (0 to " +
+                         std::to_string(std::numeric_limits<int>::max()) + ")");
+    if (std::filesystem::exists(out) && !std::filesystem::is_directory(out)) throw InputError("--out " + out + " is a file, not a folder");
     const dem::Scene scene(dem::loadScene(vm["scene"].as<std::string>(), sets));
     // Every input error before the first file: a refused release left the soil and block files written.
     const dem::Release release = dem::drawRelease(scene, dem::runSeed(vm["seed"].as<Seed>().value, run));

@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -51,6 +52,7 @@ bool blank(const std::string& line) { return line.find_first_not_of(" \t\r") == 
 }  // namespace
 
 CsvTable CsvTable::read(const std::string& path) {
+    if (std::filesystem::is_directory(path)) throw InputError(path, 0, "is a folder, not a CSV file");
     std::ifstream in(path);
     if (!in) throw InputError(path, 0, "cannot open file");
     std::stringstream ss;
@@ -114,7 +116,8 @@ double CsvTable::number(std::size_t row, std::size_t col) const {
     errno = 0;
     char* end = nullptr;
     const double v = std::strtod(s.c_str(), &end);
-    if (end != s.c_str() + s.size() || errno == ERANGE || !std::isfinite(v))
+    // strtod also reads C's hexadecimal floats: in a field survey's table "0x10" is a typo, not 16.
+    if (end != s.c_str() + s.size() || errno == ERANGE || !std::isfinite(v) || s.find_first_of("xX") != std::string::npos)
         fail(row, col, "'" + s + "' is not a finite number");
     return v;
 }

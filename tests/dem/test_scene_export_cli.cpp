@@ -133,6 +133,25 @@ TEST(SceneExportCli, UnreadableForestIsRefusedWithItsName) {
     EXPECT_NE(r.output.find(missing), std::string::npos) << r.output;
 }
 
+// A run number a campaign cannot have (runs are numbered by an int) once wrapped to another run's
+// release; an action other than export, given as --action, was ignored; a file as --out was a raw
+// filesystem error.
+TEST(SceneExportCli, ImpossibleRunsActionsAndOutputsAreRefused) {
+    const std::string out = " --out " + (exportDir() / "refused").string();
+    for (const std::string bad : {"--run 4294967297", "--run 2147483648", "--run -1"}) {
+        const CliRun r = sceneExport("--scene " + slopeScene() + " " + bad + out);
+        EXPECT_EQ(r.status, 2) << bad << ": " << r.output;
+        EXPECT_NE(r.output.find("is not a run of a campaign"), std::string::npos) << r.output;
+    }
+    const CliRun action = sylva::testing::runCli("scene --action delete --scene " + slopeScene() + out);
+    EXPECT_EQ(action.status, 2) << action.output;
+    EXPECT_NE(action.output.find("unknown scene action 'delete'"), std::string::npos) << action.output;
+    const CliRun file = sceneExport("--scene " + slopeScene() + " --out " + slopeScene());
+    EXPECT_EQ(file.status, 2) << file.output;
+    EXPECT_NE(file.output.find("is a file, not a folder"), std::string::npos) << file.output;
+    EXPECT_FALSE(std::filesystem::exists(exportDir() / "refused"));
+}
+
 // What another DEM code needs to rerun simulate's run i (the Yade cross-check, bench/yade): run i's
 // release, the solid's mass and inertia, the domain the run ends on leaving, and the block/soil law.
 TEST(SceneExportCli, WritesTheReleaseOfTheRunAskedAndTheBlockSoilLaw) {

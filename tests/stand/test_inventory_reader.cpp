@@ -89,6 +89,12 @@ TEST(InventoryReader, StandIsNamedAfterTheStemsFile) {
 
 TEST(InventoryReader, MissingColumn) { expectBadStems("stems_missing_dbh_column.csv", 1, "missing column 'dbh_cm'"); }
 TEST(InventoryReader, NonNumericDiameter) { expectBadStems("stems_nonnumeric_dbh.csv", 3, "'abc' is not a finite number"); }
+// strtod reads C's hexadecimal floats ("0x10" as 16): in a survey's table that is a typo.
+TEST(InventoryReader, HexadecimalDiameter) { expectBadStems("stems_hex_dbh.csv", 3, "'0x10' is not a finite number"); }
+TEST(InventoryReader, AFolderNamedAsTheStemsFile) {
+    const Failure f = failureOf([&] { readInventory(data(""), data("plots_ok.csv")); });
+    EXPECT_NE(f.message.find("is a folder, not a CSV file"), std::string::npos) << f.message;
+}
 TEST(InventoryReader, NegativeDiameter) { expectBadStems("stems_negative_dbh.csv", 3, "is not positive"); }
 TEST(InventoryReader, DiameterInMillimetres) { expectBadStems("stems_dbh_in_mm.csv", 3, "DBH 310 cm is above 200 cm: diameters in mm?"); }
 TEST(InventoryReader, StemOutsideItsPlot) { expectBadStems("stems_outside_plot.csv", 3, "lies outside its plot '2'"); }

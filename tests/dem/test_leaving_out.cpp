@@ -56,7 +56,8 @@ TEST(ValidationLeavingOut, AllAwakeReferenceGivesTheSameBlockMotion) {
     ASSERT_GT(impactsLeft, 0u) << "the block must go through the band";
     EXPECT_EQ(impactsLeft, impactsAll);
     // Same step, same contacts: what differs is that the reference steps every stem, and stems
-    // standing in equilibrium move by round-off only (StemOwnWeight). 1 cm after several impacts
-    // bounds the divergence that difference can seed.
-    EXPECT_LT((left - all).norm(), 0.01);
+    // standing in equilibrium move by round-off only (StemOwnWeight): on the default stems the two
+    // runs stay 1e-12 m apart over the 4 s; a woken stem not pre-compressed (its sag vibrating in the
+    // reference) puts them 5e-4 m apart, which a 1 cm bar let through.
+    EXPECT_LT((left - all).norm(), 1e-6);
 }

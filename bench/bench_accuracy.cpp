@@ -56,6 +56,7 @@ const std::vector<Knob> kKnobs = {
     {"integration.safety", {"0.15", "0.6"}},
     {"integration.stem_safety", {"0.4", "0.95"}},
     {"stem.node_spacing_m", {"0.25", "1.0"}},
+    {"stem.upper_node_spacing_m", {"0", "2"}},
     {"forest.wake_margin_m", {"0.05", "0.3"}},
     {"forest.sleep_after_s", {"0.0125", "0.1"}},
     {"forest.return_horizon_s", {"0.05", "0.4"}},
@@ -67,7 +68,7 @@ const std::vector<Knob> kKnobs = {
 // resolution; its rows show that sensitivity against this reference (docs/accuracy.md).
 const std::vector<std::string> kReference = {
     "integration.safety=0.075", "integration.stem_safety=0.4", "forest.wake_margin_m=0.3", "forest.sleep_after_s=1.0",
-    "forest.return_horizon_s=0.4",
+    "forest.return_horizon_s=0.4", "stem.upper_node_spacing_m=0",
 };
 
 struct Setting {

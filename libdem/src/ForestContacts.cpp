@@ -45,8 +45,8 @@ ContactHistory startedAt(double overlap) {
 // Stems of one stool stand so close that their cones meet near the foot: the connections of two
 // stems that overlap in the stems' rest shape are one fused stump, not a contact.
 bool fusedAtRest(const PlacedTree& a, std::size_t ca, const Stem& sa, const PlacedTree& b, std::size_t cb, const Stem& sb) {
-    const double la = sa.connectionLength(), lb = sb.connectionLength();
-    const double za0 = a.foot.z() + ca * la, za1 = za0 + la, zb0 = b.foot.z() + cb * lb, zb1 = zb0 + lb;
+    const double za0 = a.foot.z() + sa.restHeight(ca), za1 = a.foot.z() + sa.restHeight(ca + 1);
+    const double zb0 = b.foot.z() + sb.restHeight(cb), zb1 = b.foot.z() + sb.restHeight(cb + 1);
     constexpr double kSameHeight = 1e-6;  // m: heights are sums of connection lengths, equal up to round-off
     if (za1 < zb0 - kSameHeight || zb1 < za0 - kSameHeight) return false;  // sharing an end height counts
     return (a.foot - b.foot).head<2>().norm() < 0.5 * (sa.connectionDiameter(ca) + sb.connectionDiameter(cb));

@@ -181,6 +181,8 @@ SceneKeys::SceneKeys(StemParameterSet set) : parameterSet(name(set)) {
     k.number("stop.max_time_s", st.maxTime, aboveUpTo(0, 1e5, "s"), "simulated time limit");
     k.other("stem.parameters", parameterSet, "named set of the tree's parameters, the defaults of the stem.* and tree_contact.* keys: calibrated (converged in the node spacing, anchorage from winching tests) | toe2018 (the paper's Table 2 and stem, to rerun its study); docs/model-stems.md");
     k.number("stem.node_spacing_m", stem.nodeSpacing, aboveUpTo(0.005, 5, "m", "mm typed as m?"), "largest distance between a stem's nodes");
+    k.number("stem.upper_node_spacing_m", stem.upperNodeSpacing, closed(0, 10, "m"), "largest distance between a stem's nodes above the struck zone, where it only swings; 0 or not above stem.node_spacing_m: the whole stem at stem.node_spacing_m (toe2018); a resolution, results converge as it goes down to stem.node_spacing_m (docs/model-stems.md, \"A graded stem\")");
+    k.number("stem.struck_zone_m", stem.struckZone, aboveUpTo(0, 100, "m"), "height above the foot up to which a stem is cut at stem.node_spacing_m: where blocks strike stems and their hinges form");
     k.number("stem.tip_diameter_m", stem.tipDiameter, closed(0, 0.5, "m", "", "cm typed as m?"), "diameter of the cone at H_T");
     k.number("stem.axial_softening", stem.axialSoftening, closed(1, 100, ""), "the axial springs' MOE A / l divided by this, a resolution like the node spacing: the axial wave, not the bending, limits the stems' step; 1 is wood's (toe2018), results converge towards it (docs/model-stems.md)");
     k.number("stem.density_kg_m3", stem.density, closed(200, 2000, "kg/m^3", "t/m^3 typed as kg/m^3?"), "fresh wood (Table 2: 1.2 t/m^3)");

@@ -48,6 +48,27 @@ StemGeometry beechStem(double dbhCm) {
     return g;
 }
 
+std::vector<double> Stem::connectionLengths(double height, const StemParams& p) {
+    const auto cut = [](double span, double spacing, std::vector<double>& lengths) {
+        const std::size_t n = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(span / spacing - 1e-9)));
+        lengths.insert(lengths.end(), n, span / n);
+    };
+    std::vector<double> lengths;
+    const double zone = p.upperNodeSpacing > p.nodeSpacing ? std::min(p.struckZone, height) : height;
+    cut(zone, p.nodeSpacing, lengths);
+    if (height > zone) {
+        const double lower = lengths.back();
+        cut(height - zone, p.upperNodeSpacing, lengths);
+        // Connections above the zone shorter than below it would shorten the step for nothing: a stem
+        // barely taller than the zone is cut at the node spacing all the way up.
+        if (lengths.back() < lower) {
+            lengths.clear();
+            cut(height, p.nodeSpacing, lengths);
+        }
+    }
+    return lengths;
+}
+
 double Stem::diameterAt(double z) const {
     // Linear taper through the DBH at 1.3 m to the tip diameter at H_T.
     const double tip = params_.tipDiameter;
@@ -55,12 +76,16 @@ double Stem::diameterAt(double z) const {
 }
 
 Stem::Stem(const StemGeometry& g, const StemParams& p, const Vec3& foot, StemFoot support)
-    : geometry_(g), params_(p), support_(support), length_(0), footRest_(Quat::Identity()),
-      root_(p.root, p.bending.reading) {
+    : geometry_(g), params_(p), support_(support), footRest_(Quat::Identity()), root_(p.root, p.bending.reading) {
     sylva::dem::validate(p);
     validate(g, p);
-    const std::size_t n = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(g.height / p.nodeSpacing - 1e-9)));
-    length_ = g.height / n;
+    const std::vector<double> length = connectionLengths(g.height, p);
+    const std::size_t n = length.size();
+    restHeight_.assign(1, 0);
+    for (std::size_t c = 0, first = 0; c < n; ++c) {
+        if (length[c] != length[first]) first = c;  // the upper zone begins
+        restHeight_.push_back(restHeight_[first] + static_cast<double>(c + 1 - first) * length[c]);
+    }
 
     position.resize(n + 1);
     velocity.assign(n + 1, Vec3::Zero());
@@ -76,18 +101,18 @@ Stem::Stem(const StemGeometry& g, const StemParams& p, const Vec3& foot, StemFoo
 
     const double shearModulus = p.bending.moe / (2 * (1 + p.poisson));
     for (std::size_t c = 0; c < n; ++c) {
-        const double da = diameter[c], db = diameter[c + 1];
+        const double da = diameter[c], db = diameter[c + 1], l = length[c];
         // The cone's segment (a frustum), half on each node.
-        const double segmentMass = p.density * kPi * length_ * (da * da + da * db + db * db) / 12;
+        const double segmentMass = p.density * kPi * l * (da * da + da * db + db * db) / 12;
         mass_[c] += 0.5 * segmentMass;
         mass_[c + 1] += 0.5 * segmentMass;
 
         const double dCon = 0.5 * (da + db);  // mean diameter between the nodes
         const double area = kPi * dCon * dCon / 4;
         const double polar = kPi * std::pow(dCon, 4) / 32;
-        ConnectionBeam beam(p.bending, da, db, shearModulus * area / length_, length_, p.bending.sections);
+        ConnectionBeam beam(p.bending, da, db, shearModulus * area / l, l, p.bending.sections);
         const BendingDamping damping(p.bending, beam.coefficients());
-        connections_.push_back(Connection{dCon, p.bending.moe * area / length_ / p.axialSoftening, shearModulus * polar / length_,
+        connections_.push_back(Connection{l, dCon, p.bending.moe * area / l / p.axialSoftening, shearModulus * polar / l,
                                           std::move(beam), damping});
     }
 
@@ -102,15 +127,19 @@ Stem::Stem(const StemGeometry& g, const StemParams& p, const Vec3& foot, StemFoo
         root_ = RootSpring(anchored, p.bending.reading);
     }
 
-    // Crown: m_C spread equally over the nodes within L_C of the top (the top node at least).
-    std::size_t crownNodes = 0;
+    // Crown: m_C spread over the nodes within L_C of the top (the top node at least), each node
+    // carrying the crown along the connection below it (the foot, the one above): on equal
+    // connections, equally over the nodes, as the paper spreads it.
+    // (In units of the top connection, so that equal connections give exactly equal shares.)
     const auto inCrown = [&](std::size_t i) { return g.height - restHeight(i) <= g.crownLength + 1e-9 * g.height; };
-    for (std::size_t i = 0; i <= n; ++i) crownNodes += inCrown(i) ? 1 : 0;
+    const auto carried = [&](std::size_t i) { return length[i == 0 ? 0 : i - 1] / length.back(); };
+    double crownSpan = 0;
+    for (std::size_t i = 0; i <= n; ++i) crownSpan += inCrown(i) ? carried(i) : 0;
     for (std::size_t i = 0; i <= n; ++i)
-        if (inCrown(i)) mass_[i] += g.crownMass / crownNodes;
+        if (inCrown(i)) mass_[i] += g.crownMass / crownSpan * carried(i);
 
     for (std::size_t i = 0; i <= n; ++i) {
-        const double share = (i == 0 || i == n) ? 0.5 * length_ : length_;
+        const double share = 0.5 * ((i == 0 ? 0 : length[i - 1]) + (i == n ? 0 : length[i]));
         inertia_[i] = mass_[i] * (diameter[i] * diameter[i] / 16 + share * share / 12);
         inverseMass_.push_back(1 / mass_[i]);
         inverseInertia_.push_back(1 / inertia_[i]);
@@ -152,7 +181,7 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         // As a matrix: it turns four vectors, each a matrix product where a quaternion's costs twice that.
         const Eigen::Matrix3d frame = (orientation[a] * halfway(relative)).toRotationMatrix();
         const Vec3 chord = frame.transpose() * (position[b] - position[a]);  // in the connection frame
-        const Vec3 stretch = chord - Vec3(0, 0, length_ + k.weightCompression);  // shear x, y; axial z
+        const Vec3 stretch = chord - Vec3(0, 0, k.length + k.weightCompression);  // shear x, y; axial z
         // The axial dashpot's work over the step just made, booked now that its stretch is known:
         // its force times the stretch it resisted (exact, as the laws' work is; the rate the force
         // was given lags half a step, which near the stable limit makes c v^2 dt overstate it).
@@ -220,7 +249,7 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
 
 double Stem::lowestBreakHeight() const {
     for (std::size_t c = 0; c < connections_.size(); ++c)
-        if (connections_[c].bending.broken()) return (c + 0.5) * length_;
+        if (connections_[c].bending.broken()) return 0.5 * (restHeight_[c] + restHeight_[c + 1]);
     return std::nan("");
 }
 
@@ -261,7 +290,7 @@ StableStep Stem::stability() const {
         // (ConnectionBeam's generalised deformations of a straight connection), up to signs that do not
         // change the eigenvalues.
         Eigen::Matrix<double, 2, 4> strain;
-        strain << 0, -1, 0, 1, -2 / length_, 1, 2 / length_, 1;
+        strain << 0, -1, 0, 1, -2 / k.length, 1, 2 / k.length, 1;
         Eigen::Matrix2d s = k.bending.elasticStiffness();
         s(0, 0) += k.damping.addedStiffness();
         Eigen::Matrix4d stiffness = strain.transpose() * s * strain;

@@ -96,7 +96,7 @@ TEST(StemActivity, BlockCanReachAStemItHeadsForWithinTheHorizon) {
     cfg.returnHorizon = 0.1;
     const StemActivity activity(cfg);
     Stem s = stem20();
-    const double g = 9.81, l = s.connectionLength();
+    const double g = 9.81, l = s.connectionLength(0);
     // The block level with node 1, beside it (+x), where both its connections come closest:
     // gap = x - 0.5 - r_1, from its bounding sphere. The wake margin (0.1 here) is not in it: the
     // horizon's approach covers what comes next, and a margin would keep a stem moving that nothing nears.

@@ -58,8 +58,8 @@ TEST(StemBuild, NodesCarryTheTruncatedConeAndTheCrown) {
     const std::size_t n = stem.connectionCount();
     EXPECT_EQ(n, static_cast<std::size_t>(std::ceil(h / 0.4)));
     EXPECT_EQ(stem.nodeCount(), n + 1);
-    EXPECT_NEAR(stem.connectionLength(), h / n, 1e-12);
-    EXPECT_LE(stem.connectionLength(), p.nodeSpacing);
+    EXPECT_NEAR(stem.connectionLength(0), h / n, 1e-12);
+    EXPECT_LE(stem.connectionLength(0), p.nodeSpacing);
 
     const double woodMass = p.density * kPi * h * (d0 * d0 + d0 * dt + dt * dt) / 12;
     // Centre of mass height of a frustum: h (D0^2 + 2 D0 Dt + 3 Dt^2) / (4 (D0^2 + D0 Dt + Dt^2)).
@@ -104,6 +104,58 @@ TEST(StemBuild, NodesCarryTheTruncatedConeAndTheCrown) {
         EXPECT_EQ(perAxis.bending(c).reading(), BendingReading::PerAxis);
 }
 
+// A graded stem: the struck zone at the node spacing, coarser above, with the wood and the crown
+// still where the cone puts them and a step no shorter than the uniform stem's.
+TEST(StemBuild, AGradedStemIsCutFinerInTheStruckZoneAndKeepsItsMass) {
+    const StemGeometry g = beechStem(30);  // 21.7 m high, crown from 12.9 m
+    StemParams p;
+    p.nodeSpacing = 0.5;
+    p.upperNodeSpacing = 1.5;
+    p.struckZone = 4;
+    const Stem uniform(g, StemParams{}, Vec3::Zero(), StemFoot::RootSpring);
+    const Stem graded(g, p, Vec3::Zero(), StemFoot::RootSpring);
+    const std::size_t upper = static_cast<std::size_t>(std::ceil((g.height - 4) / 1.5));
+    ASSERT_EQ(graded.connectionCount(), 8 + upper);
+    for (std::size_t c = 0; c < graded.connectionCount(); ++c) {
+        const double expected = c < 8 ? 0.5 : (g.height - 4) / upper;
+        EXPECT_NEAR(graded.connectionLength(c), expected, 1e-12) << "connection " << c;
+        EXPECT_NEAR(graded.restHeight(c + 1) - graded.restHeight(c), expected, 1e-12) << "connection " << c;
+        EXPECT_NEAR(graded.position[c + 1].z(), graded.restHeight(c + 1), 1e-12);
+        EXPECT_NEAR(graded.connectionDiameter(c), graded.diameterAt(0.5 * (graded.restHeight(c) + graded.restHeight(c + 1))), 1e-12);
+    }
+    EXPECT_NEAR(graded.restHeight(graded.nodeCount() - 1), g.height, 1e-9);
+
+    // The same wood and crown, and about the same centre of mass (each lumping moves it by O(l^2 / h)).
+    double mu = 0, mg = 0, zu = 0, zg = 0, crown = 0;
+    for (std::size_t i = 0; i < uniform.nodeCount(); ++i) mu += uniform.mass()[i], zu += uniform.mass()[i] * uniform.position[i].z();
+    for (std::size_t i = 0; i < graded.nodeCount(); ++i) mg += graded.mass()[i], zg += graded.mass()[i] * graded.position[i].z();
+    EXPECT_NEAR(mg, mu, 1e-9 * mu);
+    EXPECT_NEAR(zg / mg, zu / mu, 1.5 * 1.5 / g.height);
+    // The crown's nodes each carry the crown along the connection below them: a node in the upper zone
+    // takes its connection's length in m_C / L_C, as the uniform stem's do at 0.5 m.
+    const std::size_t top = graded.nodeCount() - 1;
+    const double wood = 0.5 * p.density * std::acos(-1.0) * graded.connectionLength(top - 1) *
+                        (std::pow(graded.diameterAt(graded.restHeight(top - 1)), 2) +
+                         graded.diameterAt(graded.restHeight(top - 1)) * graded.diameterAt(g.height) + std::pow(graded.diameterAt(g.height), 2)) / 12;
+    crown = graded.mass()[top] - wood;
+    double crownSpan = 0;
+    for (std::size_t i = 1; i <= top; ++i)
+        if (g.height - graded.restHeight(i) <= g.crownLength) crownSpan += graded.connectionLength(i - 1);
+    EXPECT_NEAR(crown, g.crownMass * graded.connectionLength(top - 1) / crownSpan, 1e-9 * g.crownMass);
+
+    // Longer connections above only lower their own frequencies.
+    EXPECT_GE(graded.stableTimeStep(), uniform.stableTimeStep() * (1 - 1e-12));
+
+    // A stem barely taller than the zone is cut at the node spacing all the way up, rather than end
+    // in a connection shorter than those below it.
+    StemGeometry short6 = beechStem(8);
+    ASSERT_GT(short6.height, 4.0);
+    p.struckZone = short6.height - 0.3;
+    const Stem barely(short6, p, Vec3::Zero(), StemFoot::RootSpring);
+    for (std::size_t c = 0; c < barely.connectionCount(); ++c) EXPECT_NEAR(barely.connectionLength(c), barely.connectionLength(0), 1e-12);
+    EXPECT_LE(barely.connectionLength(0), 0.5);
+}
+
 TEST(StemBuild, ImpossibleStemsAreInputErrors) {
     StemGeometry g = beechStem(20);
     StemParams p;
@@ -111,6 +163,14 @@ TEST(StemBuild, ImpossibleStemsAreInputErrors) {
         StemParams q = p;
         q.nodeSpacing = 0;
         EXPECT_TRUE(contains(buildError(g, q), "node spacing"));
+    }
+    {
+        StemParams q = p;
+        q.upperNodeSpacing = -1;
+        EXPECT_TRUE(contains(buildError(g, q), "upper node spacing"));
+        q.upperNodeSpacing = 1.5;
+        q.struckZone = 0;
+        EXPECT_TRUE(contains(buildError(g, q), "struck zone"));
     }
     {
         StemParams q = p;

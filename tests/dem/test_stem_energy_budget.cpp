@@ -31,7 +31,7 @@ Budget strike(double dbhCm, StemFoot foot, double height, double force, double d
     for (double t = 0; t < 3; t += dt) settle.step(stem, dt);
     stem.ledger = StemLedger{};
 
-    const std::size_t struck = static_cast<std::size_t>(std::lround(height / stem.connectionLength()));
+    const std::size_t struck = static_cast<std::size_t>(std::lround(height / stem.connectionLength(0)));
     StemLoads loads;
     loads.force.assign(stem.nodeCount(), Vec3::Zero());
     StemStepper stepper(gravity);

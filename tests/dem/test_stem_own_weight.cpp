@@ -58,7 +58,7 @@ TEST(StemOwnWeight, StoredEnergyIsTheAxialSpringsUnderTheWeightAbove) {
     for (std::size_t c = stem.connectionCount(); c-- > 0;) {
         above += stem.mass()[c + 1] * kGravity;
         const double d = stem.connectionDiameter(c);
-        const double k = p.bending.moe * M_PI * d * d / 4 / stem.connectionLength();
+        const double k = p.bending.moe * M_PI * d * d / 4 / stem.connectionLength(c);
         expected += above * above / (2 * k);
     }
     EXPECT_NEAR(stem.elasticEnergy(), expected, 1e-12 * expected);

@@ -20,7 +20,7 @@ TEST(StemRupture, OverloadBreaksTheWeakestSectionAndThePartAboveFallsFreely) {
     const StemGeometry g = beechStem(20);
     const StemParams p;  // Table 2, isotropic reading, 0.5 m spacing
     Stem stem(g, p, Vec3::Zero(), StemFoot::Clamped);
-    const double l = stem.connectionLength();
+    const double l = stem.connectionLength(0);
     const std::size_t loaded = static_cast<std::size_t>(std::lround(2.0 / l));
 
     // Where the load's moment P (h - z) first reaches M_Rupt = sigma_Rupt pi D_con^3 / 32, with

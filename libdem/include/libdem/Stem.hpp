@@ -1,8 +1,10 @@
 #pragma once
 // A tree stem as a chain of rigid nodes from the foot up (paper Sect. 2.1.2, Fig. 2).
 // Geometry: a truncated cone through the DBH at 1.3 m, tapering linearly to StemParams::tipDiameter
-// at H_T. Each cone segment's mass goes half to each of its nodes; the crown mass m_C is spread
-// equally over the nodes within L_C of the top. Between neighbouring nodes a connection of length l
+// at H_T, cut into connections of length l up to StemParams::nodeSpacing in the struck zone and up to
+// StemParams::upperNodeSpacing above it. Each cone segment's mass goes half to each of its nodes; the
+// crown mass m_C is spread over the nodes within L_C of the top, each carrying the crown along the
+// connection below it (equally, on equal connections, as the paper spreads it). Between neighbouring nodes a connection of length l
 // and mean diameter D_con carries linear elastic axial and twist springs (MOE and
 // G = MOE / (2 (1 + nu)); the axial one damped by wood's loss factor) and, for bending and shear, a ConnectionBeam (the trilinear law of Fig. 3
 // on its sections). The foot is clamped (coppice stems) or held
@@ -60,9 +62,9 @@ public:
     StemFoot foot() const { return support_; }
     bool translates(std::size_t node) const { return node > 0; }
     bool rotates(std::size_t node) const { return node > 0 || support_ == StemFoot::RootSpring; }
-    double restHeight(std::size_t node) const { return node * length_; }  // above the foot, unloaded
+    double restHeight(std::size_t node) const { return restHeight_[node]; }  // above the foot, unloaded
     double diameterAt(double heightAboveFoot) const;
-    double connectionLength() const { return length_; }  // l
+    double connectionLength(std::size_t c) const { return connections_[c].length; }  // l, between nodes c and c+1
     double connectionDiameter(std::size_t c) const { return connections_[c].diameter; }  // D_con, between nodes c and c+1
     const ConnectionBeam& bending(std::size_t c) const { return connections_[c].bending; }
     bool broken(std::size_t c) const { return connections_[c].bending.broken(); }
@@ -92,8 +94,13 @@ public:
     double stableTimeStep() const;
     StableStep stability() const;  // the two bounds, to which contacts add theirs
 
+    // Where the stem is cut: connections of equal length, at most StemParams::nodeSpacing, up to the
+    // struck zone's top, and at most upperNodeSpacing above it (docs/model-stems.md, "A graded stem").
+    static std::vector<double> connectionLengths(double height, const StemParams& p);
+
 private:
     struct Connection {
+        double length;    // l
         double diameter;  // D_con
         double axial, twist;  // N/m, N m/rad
         ConnectionBeam bending;  // bending and shear
@@ -105,7 +112,7 @@ private:
     StemGeometry geometry_;
     StemParams params_;
     StemFoot support_;
-    double length_;
+    std::vector<double> restHeight_;
     Quat footRest_;
     Eigen::Vector3d rootAngle_ = Eigen::Vector3d::Zero();
     std::vector<double> mass_, inertia_, inverseMass_, inverseInertia_;

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <iostream>
 
+#include <sys/wait.h>
+
 namespace sylva::cli {
 
 bool plotWithGnuplot(const std::string& script, const std::string& what) {
@@ -14,10 +16,20 @@ bool plotWithGnuplot(const std::string& script, const std::string& what) {
     std::fwrite(script.data(), 1, script.size(), p);
     const int status = pclose(p);
     if (status != 0) {
-        std::cerr << "warning: gnuplot failed (is gnuplot-nox installed?); " << what << " not drawn\n";
+        // The shell says 127 for a command it cannot find.
+        if (WIFEXITED(status) && WEXITSTATUS(status) == 127)
+            std::cerr << "warning: gnuplot not found (apt-get install gnuplot-nox); " << what << " not drawn\n";
+        else
+            std::cerr << "warning: gnuplot stopped on the figure's script (its message is above); " << what << " not drawn\n";
         return false;
     }
     return true;
+}
+
+std::string gnuplotText(const std::string& text) {
+    std::string quoted = "'";
+    for (const char c : text) quoted += c == '\'' ? std::string("''") : std::string(1, c);
+    return quoted + "'";
 }
 
 }  // namespace sylva::cli

@@ -9,4 +9,8 @@ namespace sylva::cli {
 // missing or fails.
 bool plotWithGnuplot(const std::string& script, const std::string& what);
 
+// `text` as a gnuplot single-quoted string, quotes and all: a path or a stand's name with an
+// apostrophe in it would otherwise end the string early and fail the whole script.
+std::string gnuplotText(const std::string& text);
+
 }  // namespace sylva::cli

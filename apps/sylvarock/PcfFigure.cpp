@@ -44,23 +44,23 @@ void drawPcfFigure(const std::string& dir, const std::string& stem, const std::s
 
     std::ostringstream gp;
     gp << "set terminal svg size 800,500 dynamic noenhanced\nset grid\nset datafile separator ','\nset datafile missing 'NA'\n"
-       << "set datafile columnheaders\nset output '" << dir << "/" << stem << ".svg'\nset title '" << title
-       << "'\nset xlabel 'r (m)'\nset ylabel 'g(r), log scale'\nset logscale y\nset key top right\nplot ";
+       << "set datafile columnheaders\nset output " << gnuplotText(dir + "/" + stem + ".svg") << "\nset title " << gnuplotText(title)
+       << "\nset xlabel 'r (m)'\nset ylabel 'g(r), log scale'\nset logscale y\nset key top right\nplot ";
     // Log scale: a coppice stand's g reaches 20-40 at stool distances and ~1 beyond; zeros (no pair
     // at that r) fall off the plot.
     if (envelope) {
         char level[32];
         std::snprintf(level, sizeof level, "%.0f %%", 100 * envelope->level());
-        gp << "'" << csv << "' using 1:4:5 with filledcurves fc rgb '#d8d8d8' title 'complete spatial randomness, "
+        gp << gnuplotText(csv) << " using 1:4:5 with filledcurves fc rgb '#d8d8d8' title 'complete spatial randomness, "
            << envelope->simulations << " simulations (pointwise " << level << ")', ";
     }
-    gp << "'" << csv << "' using 1:2 with lines lw 2 lc rgb 'black' title 'stand (translation)', "
+    gp << gnuplotText(csv) << " using 1:2 with lines lw 2 lc rgb 'black' title 'stand (translation)', "
        << "'' using 1:3 with lines lc rgb '#777777' dashtype 2 title 'stand (Ripley isotropic)', "
        << "1 with lines lc rgb '#999999' dashtype 3 title 'Poisson'";
     const char* colours[] = {"#1b9e77", "#d95f02", "#7570b3", "#e7298a"};
     const std::size_t first = envelope ? 6 : 4;
     for (std::size_t f = 0; f < forests.size(); ++f)
-        gp << ", '' using 1:" << first + f << " with lines lc rgb '" << colours[f % 4] << "' title '" << forests[f].name << "'";
+        gp << ", '' using 1:" << first + f << " with lines lc rgb '" << colours[f % 4] << "' title " << gnuplotText(forests[f].name);
     gp << "\nunset output\n";
     plotWithGnuplot(gp.str(), stem + ".svg in " + dir);
 }

@@ -1,4 +1,5 @@
 // sylvarock generate: virtual forests over a slope from a stand's inventory (docs/stand.md, "Virtual forests").
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
@@ -60,14 +61,21 @@ void drawForestFigures(const std::string& dir, const stand::Inventory& inventory
     for (std::size_t k = 0; k < forests.size() && k < 4; ++k) {
         stand::PlotPoints whole{extent, {}};
         for (const auto& t : forests[k].trees) whole.points.emplace_back(t.x, t.y);
-        curves.push_back({"virtual forest " + structure + " " + std::to_string(k + 1), stand::pooledPairCorrelation({whole}, rmax, nr)});
+        stand::PairCorrelation forest = stand::pooledPairCorrelation({whole}, rmax, nr);
+        // Past the extent's shortest side no pair of points is that far apart in every direction: g is
+        // undefined there (it read 0), and is left out of the figure (NA in its CSV).
+        const double shortest = (extent.upper() - extent.lower()).minCoeff();
+        for (std::size_t i = 0; i < forest.r.size(); ++i)
+            if (forest.r[i] >= shortest) forest.trans[i] = forest.iso[i] = std::nan("");
+        curves.push_back({"virtual forest " + structure + " " + std::to_string(k + 1), forest});
     }
     drawPcfFigure(dir, "pcf_vs_inventory", "g(r): virtual forests (" + structure + ") against the inventory " + inventory.name, g,
                   &envelope, curves);
     std::ostringstream gp;
-    gp << "set terminal svg size 1000,460 dynamic noenhanced\nset output '" << dir << "/forest_map.svg'\n"
-       << "set title 'Virtual forest " << structure << " 1 from " << inventory.name << ": " << forests.front().trees.size()
-       << " stems (dot size ~ DBH)'\nset xlabel 'x (m)'\nset ylabel 'y (m)'\nset size ratio -1\n"
+    gp << "set terminal svg size 1000,460 dynamic noenhanced\nset output " << gnuplotText(dir + "/forest_map.svg") << "\n"
+       << "set title " << gnuplotText("Virtual forest " + structure + " 1 from " + inventory.name + ": " +
+                                       std::to_string(forests.front().trees.size()) + " stems (dot size ~ DBH)")
+       << "\nset xlabel 'x (m)'\nset ylabel 'y (m)'\nset size ratio -1\n"
        << "set xrange [" << extent.lower().x() << ":" << extent.upper().x() << "]\nset yrange [" << extent.lower().y() << ":"
        << extent.upper().y() << "]\n$stems << EOD\n";
     for (const auto& t : forests.front().trees) gp << t.x << " " << t.y << " " << t.dbhCm / 40.0 << "\n";  // symbol size ~ DBH
@@ -120,6 +128,9 @@ int runGenerate(int argc, const char* const* argv) {
     for (long k = 1; k <= count; ++k) {
         settings.seed = seed + static_cast<unsigned long>(k - 1);
         const stand::GeneratedForest g = stand::generateForest(catalogue, extent, settings);
+        // An empty forest would go on into simulate or assess as a forest that stops nothing.
+        if (g.forest.trees.empty())
+            throw InputError("--extent " + vm["extent"].as<std::string>() + ": " + (g.warnings.empty() ? "no stem drawn" : g.warnings.front()));
         for (const auto& w : g.warnings) std::cerr << "sylvarock generate: warning: " << w << "\n";
         const std::string path = realisationPath(vm["out"].as<std::string>(), k, count);
         stand::writeForestCsv(path, g.forest);

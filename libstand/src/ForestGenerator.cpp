@@ -146,7 +146,12 @@ GeneratedForest generateForest(const StandCatalogue& stand, const Window& extent
     }
     const auto stems = static_cast<std::size_t>(std::llround(expected));
     ForestBuilder builder(stand, extent, settings, rng, stems);
-    if (stems == 0) builder.warn("the extent is too small for a single stem at " + std::to_string(stand.stemsPerHa()) + " stems/ha");
+    if (stems == 0) {  // a sliver of a stand map: nothing to draw there, said
+        std::ostringstream what;
+        what << "an extent of " << extent.area() << " m2 at " << stand.stemsPerHa() << " stems/ha holds " << expected
+             << " stems, not one: none drawn (at least " << 0.5e4 / stand.stemsPerHa() << " m2 holds one)";
+        builder.warn(what.str());
+    }
 
     ForestStructure structure = settings.structure;
     if (structure == ForestStructure::Aggregated && stand.stools().empty()) {

@@ -89,18 +89,47 @@ TEST(GenerateCli, BadOptionsExitWithStatusTwoAndSayWhy) {
         EXPECT_EQ(r.status, 2) << seeds;
         EXPECT_NE(r.output.find("must stay within 0 to 4294967295"), std::string::npos) << r.output;
     }
+    // An extent too small for one stem: an empty forest would go on as a forest that stops nothing.
+    const std::string tiny = ::testing::TempDir() + "cli_tiny.csv";
+    std::filesystem::remove(tiny);
+    r = generate("--structure random --extent 0,0,1,1 --out " + tiny);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("stems, not one"), std::string::npos) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(tiny));
 }
 
 // Figures for people (issue 13): the virtual forests' g(r) against the inventory's and its CSR
-// envelope, and a map; the numbers are written with or without gnuplot.
+// envelope, and a map; the numbers are written with or without gnuplot. The folder's name has an
+// apostrophe and a space, which once ended gnuplot's quoted paths early and lost every figure.
 TEST(GenerateCli, FiguresCompareTheForestsWithTheInventory) {
-    const std::string dir = ::testing::TempDir() + "/generate_cli_figures/";
+    const std::string dir = ::testing::TempDir() + "/generate_cli_figures/the stand's figures/";
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
-    const CliRun r = generate("--structure aggregated --extent 0,0,100,60 --seed 3 --realisations 2 --out " + dir + "F.csv --plot-dir " + dir + "fig");
+    const CliRun r = generate("--structure aggregated --extent 0,0,100,60 --seed 3 --realisations 2 --out \"" + dir +
+                              "F.csv\" --plot-dir \"" + dir + "fig\"");
     ASSERT_EQ(r.status, 0) << r.output;
     const std::string csv = slurp(dir + "fig/pcf_vs_inventory.csv");
     EXPECT_EQ(csv.substr(0, csv.find('\n')), "r,g_trans,g_iso,csr_trans_low,csr_trans_high,forest1_g_trans,forest2_g_trans");
+    // A strip 8 m wide: the forest's g is undefined past 8 m (it read 0 there), so it is NA, and a number below.
+    const CliRun strip = generate("--structure random --extent 0,0,300,8 --seed 3 --out \"" + dir + "S.csv\" --plot-dir \"" + dir + "strip\"");
+    ASSERT_EQ(strip.status, 0) << strip.output;
+    std::istringstream rows(slurp(dir + "strip/pcf_vs_inventory.csv"));
+    std::string row;
+    std::getline(rows, row);
+    int below = 0, beyond = 0;
+    while (std::getline(rows, row)) {
+        const double r = std::stod(row.substr(0, row.find(',')));
+        const std::string forest = row.substr(row.rfind(',') + 1);
+        if (r >= 8) {
+            EXPECT_EQ(forest, "NA") << row;
+            ++beyond;
+        } else if (r > 1) {
+            EXPECT_NE(forest, "NA") << row;
+            ++below;
+        }
+    }
+    EXPECT_GT(below, 0);
+    EXPECT_GT(beyond, 0);
     if (std::system("gnuplot --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "gnuplot not installed";
     EXPECT_NE(slurp(dir + "fig/pcf_vs_inventory.svg").find("<svg"), std::string::npos);
     EXPECT_NE(slurp(dir + "fig/forest_map.svg").find("<svg"), std::string::npos);

@@ -38,10 +38,11 @@ stand::Inventory readInput(const po::variables_map& vm) {
     if (vm.count("window") == vm.count("window-wkt"))
         throw InputError("--points needs exactly one of --window xmin,ymin,xmax,ymax and --window-wkt 'POLYGON((...))'");
     std::optional<stand::Window> window;
+    // numberList names the option itself; the window's own complaints do not.
+    const std::vector<double> corners = vm.count("window") ? numberList("window", vm["window"].as<std::string>(), 4) : std::vector<double>{};
     try {
         if (vm.count("window")) {
-            const auto v = numberList("window", vm["window"].as<std::string>(), 4);
-            window = stand::Window::rectangle(v[0], v[1], v[2], v[3]);
+            window = stand::Window::rectangle(corners[0], corners[1], corners[2], corners[3]);
         } else {
             window = stand::Window::fromWkt(vm["window-wkt"].as<std::string>());
         }
@@ -108,9 +109,10 @@ void drawFigures(const std::string& dir, const stand::Inventory& inv, const Stan
     gp << "set terminal svg size 800,500 dynamic noenhanced\nset grid\n$dbh << EOD\n";
     for (const auto& s : inv.stems)
         if (stand::measured(s)) gp << s.dbhCm << "\n";
-    gp << "EOD\nset output '" << dir << "/dbh_histogram.svg'\nset title 'DBH distribution, " << inv.name << " ("
-       << std::count_if(inv.stems.begin(), inv.stems.end(), stand::measured)
-       << " measured stems)'\nset xlabel 'DBH (cm)'\nset ylabel 'stems'\nset style fill solid 0.5\n"
+    const auto measured = std::count_if(inv.stems.begin(), inv.stems.end(), stand::measured);
+    gp << "EOD\nset output " << gnuplotText(dir + "/dbh_histogram.svg") << "\nset title "
+       << gnuplotText("DBH distribution, " + inv.name + " (" + std::to_string(measured) + " measured stems)")
+       << "\nset xlabel 'DBH (cm)'\nset ylabel 'stems'\nset style fill solid 0.5\n"
           "bin(x) = 2.5 * floor(x / 2.5) + 1.25\n"
           "plot $dbh using (bin($1)):(1) smooth frequency with boxes title '2.5 cm classes'\nunset output\n";
     plotWithGnuplot(gp.str(), "dbh_histogram.svg in " + dir);

@@ -165,7 +165,13 @@ TEST(StatsCli, BadInputExitsWithFileAndLine) {
 TEST(StatsCli, InconsistentOptionsExit2) {
     EXPECT_EQ(stats("--points " + data("points_ok.csv")).status, 2);
     EXPECT_EQ(stats("--stems " + data("stems_ok.csv")).status, 2);
-    EXPECT_EQ(stats("--points " + data("points_ok.csv") + " --window 0,0,10").status, 2);
+    const CliRun three = stats("--points " + data("points_ok.csv") + " --window 0,0,10");
+    EXPECT_EQ(three.status, 2);
+    EXPECT_EQ(three.err.find("--window: --window"), std::string::npos) << three.err;  // named once
+    EXPECT_NE(three.err.find("--window: expected 4 comma-separated numbers"), std::string::npos) << three.err;
+    const CliRun flat = stats("--points " + data("points_ok.csv") + " --window 0,0,0,4");
+    EXPECT_EQ(flat.status, 2);
+    EXPECT_NE(flat.err.find("--window: degenerate window"), std::string::npos) << flat.err;
     const CliRun r = stats("--points " + data("points_ok.csv") + " --window-wkt 'POLYGON((0 0, 1 1))'");
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find("--window-wkt"), std::string::npos) << r.err;

@@ -39,13 +39,13 @@ void drawFigures(const std::string& dir, const dem::Scene& scene, const std::vec
     // One run (a single-tree impact) or runs that all stop at one place: give the axis a width.
     if (!runout.empty() && runout.front() == runout.back())
         gp << "set xrange [" << runout.front() - 1 << ":" << runout.back() + 1 << "]\n";
-    gp << "set output '" << dir << "/runout_cdf.svg'\nset title 'Cumulative distribution of run-out'\n"
+    gp << "set output " << gnuplotText(dir + "/runout_cdf.svg") << "\nset title 'Cumulative distribution of run-out'\n"
        << "set xlabel 'run-out along the slope (m)'\nset ylabel 'share of blocks stopped'\n"
-       << "plot '" << dir << "/runout_cdf.csv' every ::1 using 1:2 with steps lw 2\n"
-       << "set output '" << dir << "/stop_map.svg'\nset title 'Stop positions'\nset xlabel 'x (m)'\nset ylabel 'y (m)'\n"
+       << "plot " << gnuplotText(dir + "/runout_cdf.csv") << " every ::1 using 1:2 with steps lw 2\n"
+       << "set output " << gnuplotText(dir + "/stop_map.svg") << "\nset title 'Stop positions'\nset xlabel 'x (m)'\nset ylabel 'y (m)'\n"
        << "set xrange [" << scene.soil().xmin() << ":" << scene.soil().xmax() << "]\nset yrange [" << scene.soil().ymin()
        << ":" << scene.soil().ymax() << "]\nset size ratio -1\n"
-       << "plot '" << dir << "/runs.csv' every ::1 using 6:7 with points pt 7 ps 0.5\n";
+       << "plot " << gnuplotText(dir + "/runs.csv") << " every ::1 using 6:7 with points pt 7 ps 0.5\n";
     plotWithGnuplot(gp.str(), "run-out figures");
 }
 
@@ -71,7 +71,9 @@ void prepareOutFolder(const std::string& dir) {
     for (const std::string name : kSimulateOutputs) {
         const fs::path path = fs::path(dir) / name;
         if (!fs::exists(path)) continue;
-        if (!earlierRun) refuse(name + (name == "trajectories" ? "/" : "") + ", and no runs.csv of an earlier simulate run beside it");
+        if (!earlierRun)
+            refuse(name == "runs.csv" ? std::string("a runs.csv that simulate did not write (or an older build, with other columns)")
+                                      : name + (name == "trajectories" ? "/" : "") + ", and no runs.csv of an earlier simulate run beside it");
         replaced = (name == "trajectories" ? dem::removeTrajectories(path.string()) : fs::remove(path)) || replaced;
     }
     if (replaced) std::cerr << "--out " << dir << ": the earlier simulate run's outputs are replaced\n";

@@ -145,6 +145,10 @@ TEST(SimulateCli, AnEarlierRunsOutputsAreReplacedAndAnotherCommandsFolderRefused
     EXPECT_EQ(slurp((theirs / "summary.json").string()), "{\"mine\": 1}\n");
     EXPECT_TRUE(std::filesystem::exists(theirs / "trajectories" / "events.gpx"));
     EXPECT_FALSE(std::filesystem::exists(theirs / "runs.csv"));
+    // A runs.csv simulate did not write (another tool's, or an older build's columns) is theirs too.
+    std::ofstream(theirs / "runs.csv") << "plot,runout\n1,2\n";
+    EXPECT_EQ(cli(base + "--runs 1 --out " + theirs.string()), 2 << 8);
+    EXPECT_EQ(slurp((theirs / "runs.csv").string()), "plot,runout\n1,2\n");
 }
 
 // --only-run runs one run of a campaign again, seeded as in the whole campaign: its row is the

@@ -1,9 +1,12 @@
 // sylvarock calibrate-lumped: fit the lumped model's roughness on the DEM's run-out without forest,
 // as the paper calibrated Rockyfor3D (Sect. 2.3.2, Table 1), and store it in the scene's [lumped].
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -19,17 +22,35 @@
 namespace sylva::cli {
 namespace {
 
-// The run-outs of a `simulate` runs.csv, failed runs left out.
-std::vector<double> readRunouts(const std::string& path) {
+// The run-outs of a `simulate` runs.csv on `scene`, failed runs left out. Rows another file could have
+// (a run twice, from two campaigns' files joined; a stop reason simulate never writes; a run-out no
+// path on the scene's bed reaches) are refused with their line: each would move the fit silently.
+std::vector<double> readRunouts(const std::string& path, const dem::Scene& scene) {
     const auto t = CsvTable::read(path);
-    const std::size_t runout = t.require("runout_m"), reason = t.require("stop_reason");
+    const std::size_t runout = t.require("runout_m"), reason = t.require("stop_reason"), run = t.require("run");
     // The lumped soil is calibrated on bare ground: run-outs shortened by trees would make it rougher.
     const auto impacts = t.index("tree_impacts");
+    const dem::SoilBed& bed = scene.soil();
+    // Along the surface, no path is longer than the bed's diagonal over the cosine of a 70 degree slope.
+    const double longest = 3 * std::hypot(bed.xmax() - bed.xmin(), bed.ymax() - bed.ymin());
+    const std::set<std::string> reasons{"rest", "left_domain", "time_limit", "failed"};
+    std::map<long, long> seen;  // run -> line
     std::vector<double> out;
     for (std::size_t i = 0; i < t.rows(); ++i) {
+        const long id = t.integer(i, run);
+        if (const auto [at, fresh] = seen.emplace(id, t.lineOf(i)); !fresh)
+            t.fail(i, run, "run " + std::to_string(id) + " is also on line " + std::to_string(at->second) +
+                               ": two campaigns' runs.csv joined? calibrate on one campaign's file");
         if (impacts && !t.text(i, *impacts).empty() && t.number(i, *impacts) > 0)
             t.fail(i, *impacts, "this run hit trees: calibrate on a campaign without forest (simulate with no --forest)");
-        if (t.text(i, reason) != "failed") out.push_back(t.number(i, runout));
+        if (!reasons.count(t.text(i, reason)))
+            t.fail(i, reason, "stop reason '" + t.text(i, reason) + "' is not one simulate writes (rest, left_domain, time_limit, failed)");
+        if (t.text(i, reason) == "failed") continue;
+        const double x = t.number(i, runout);
+        if (!(x >= 0 && x <= longest))
+            t.fail(i, runout, "run-out " + t.text(i, runout) + " m: outside 0 to " + std::to_string(static_cast<long>(longest)) +
+                                  " m, the longest path on this scene's bed; a runs.csv of another scene?");
+        out.push_back(x);
     }
     if (out.size() < 100)
         throw InputError(path, 0, std::to_string(out.size()) + " finished runs: a Dist50 to calibrate on needs at least 100 (the paper used 3 000)");
@@ -52,23 +73,26 @@ void rewriteLumpedSection(const std::string& path, const std::string& comment,
     std::ostringstream kept;
     std::vector<std::string> others;  // the section's lines that stay
     std::string line;
-    bool inLumped = false;
+    bool inLumped = false, beforeSections = true;
+    const auto fitted = [&](const std::string& key) { return std::any_of(keys.begin(), keys.end(), [&](const auto& k) { return k.first == key; }); };
     while (std::getline(in, line)) {
         const std::string t = trimmed(line);
+        const auto eq = t.find('=');
+        const std::string key = eq == std::string::npos ? std::string() : trimmed(t.substr(0, eq));
         if (!t.empty() && t[0] == '[') {
+            beforeSections = false;
             inLumped = t.rfind("[lumped]", 0) == 0;
             if (inLumped) continue;
         }
         if (!inLumped) {
-            kept << line << '\n';
+            // A fitted key given with its section's name before any section (lumped.rg70_m = ...) would be
+            // given twice once the section below sets it: the scene would no longer load.
+            if (!(beforeSections && key.rfind("lumped.", 0) == 0 && fitted(key.substr(7)))) kept << line << '\n';
             continue;
         }
         const bool fitComment = std::any_of(std::begin(kFitComments), std::end(kFitComments),
                                             [&](const char* c) { return t.rfind(c, 0) == 0; });
-        const auto eq = t.find('=');
-        const std::string key = eq == std::string::npos ? std::string() : trimmed(t.substr(0, eq));
-        const bool replaced = std::any_of(keys.begin(), keys.end(), [&](const auto& k) { return k.first == key; });
-        if (!fitComment && !replaced) others.push_back(line);
+        if (!fitComment && !fitted(key)) others.push_back(line);
     }
     std::string text = kept.str();
     while (text.size() > 1 && text[text.size() - 1] == '\n' && text[text.size() - 2] == '\n') text.pop_back();
@@ -108,7 +132,7 @@ int runCalibrateLumped(int argc, const char* const* argv) {
 
     std::vector<double> dem;
     if (vm.count("dem")) {
-        dem = readRunouts(vm["dem"].as<std::string>());
+        dem = readRunouts(vm["dem"].as<std::string>(), scene);
     } else {
         if (demRuns < 100) throw InputError("--dem-runs " + std::to_string(demRuns) + ": a Dist50 needs at least 100 runs");
         std::cerr << "DEM: " << demRuns << " runs without forest\n";

@@ -260,6 +260,38 @@ TEST(LumpedCalibration, RefusesRunOutsShortenedByTrees) {
     EXPECT_NE(r.output.find("this run hit trees"), std::string::npos) << r.output;
 }
 
+// Rows one bare campaign's runs.csv cannot have are refused at their line, before any lumped run: a
+// run twice (two files joined), a stop reason simulate never writes, a run-out past any path on the
+// scene's bed (another scene's file, or a unit slip). Each was counted into the fit.
+TEST(LumpedCalibration, RefusesRowsThatAreNotOneBareCampaigns) {
+    const auto dir = std::filesystem::temp_directory_path() / "sylvarock-calibrate-rows";
+    std::filesystem::create_directories(dir);
+    struct Case {
+        int row;
+        std::string line, message;
+    };
+    const Case cases[] = {{5, "3,310,rest,0", "run 3 is also on line 5"},
+                          {8, "120,310,stopped,0", "stop reason 'stopped'"},
+                          {12, "120,3.1e6,rest,0", "run-out 3.1e6 m: outside 0 to"},
+                          {12, "120,-4,rest,0", "run-out -4 m"}};
+    for (const Case& c : cases) {
+        const std::string runs = (dir / "runs.csv").string();
+        std::ofstream out(runs);
+        out << "run,runout_m,stop_reason,tree_impacts\n";
+        for (int i = 0; i < 120; ++i) out << (i + 1 == c.row ? c.line : std::to_string(i) + "," + std::to_string(300 + i) + ",rest,0") << "\n";
+        out.close();
+        const auto r = sylva::testing::runCli("calibrate-lumped --scene " + std::string(SYLVAROCK_DATA) + "/scenes/no-forest.ini --dem " + runs);
+        EXPECT_EQ(r.status, 2) << r.output;
+        EXPECT_NE(r.output.find(runs + ":" + std::to_string(c.row + 1)), std::string::npos) << c.line << ": " << r.output;
+        EXPECT_NE(r.output.find(c.message), std::string::npos) << c.line << ": " << r.output;
+    }
+}
+
+std::string writeText(const std::string& path, const std::string& text) {
+    std::ofstream(path) << text;
+    return path;
+}
+
 // --write sets the fit's keys and keeps the section's others: the fit was made with them, and the
 // scene must give the fitted Dist50 again (they used to be dropped: Dist50 346 m instead of 338.5 m).
 TEST(LumpedCalibration, WriteKeepsTheSectionsOtherKeys) {
@@ -275,7 +307,14 @@ TEST(LumpedCalibration, WriteKeepsTheSectionsOtherKeys) {
     const std::string relative = "../slopes/";  // the scene's profile, relative to data/scenes
     text.replace(text.find(relative), relative.size(), std::string(SYLVAROCK_DATA) + "/slopes/");
     text += "deviation_sd_deg = 8\ntree_reach = centre\n# a note of the user's\n";
-    std::ofstream(scene) << text;
+    // A fitted key given before any section, with its section's name (and not in the section): replaced
+    // too, or the scene would set it twice once the section does, and no longer load.
+    const std::string inSection = "\nrg70_m = ";
+    const auto at = text.find(inSection);
+    ASSERT_NE(at, std::string::npos);
+    text.erase(at + 1, text.find('\n', at + 1) - at);
+    text = "lumped.rg70_m = 0.05\n" + text;
+    ASSERT_NO_THROW(loadScene(writeText(scene, text)));
     const auto r = sylva::testing::runCli("calibrate-lumped --scene " + scene + " --dem " + runs + " --runs 200 --write");
     ASSERT_EQ(r.status, 0) << r.output;
     std::ifstream written(scene);

@@ -235,7 +235,7 @@ SceneKeys::SceneKeys(StemParameterSet set) : parameterSet(name(set)) {
 }
 
 // Line of `key` ("section.key") in an INI file, 0 if not found: errors point at it.
-long lineOf(const std::string& path, const std::string& key) {
+long lineOf(const std::string& path, const std::string& key, int occurrence = 1) {
     const auto dot = key.rfind('.');
     const std::string section = dot == std::string::npos ? "" : key.substr(0, dot);
     const std::string name = key.substr(dot == std::string::npos ? 0 : dot + 1);
@@ -249,7 +249,7 @@ long lineOf(const std::string& path, const std::string& key) {
             current = line.substr(first + 1, close == std::string::npos ? std::string::npos : close - first - 1);
         } else if (current == section && line.compare(first, name.size(), name) == 0) {
             const auto rest = line.find_first_not_of(" \t", first + name.size());
-            if (rest != std::string::npos && line[rest] == '=') return n;
+            if (rest != std::string::npos && line[rest] == '=' && --occurrence == 0) return n;
         }
     }
     return 0;
@@ -368,9 +368,14 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
         } catch (const po::error& e) {
             const std::string message = optionErrorMessage(e), quoted = "invalid line '";
             const auto at = message.find(quoted);
-            const long line = at == std::string::npos
-                                  ? 0
-                                  : lineHolding(fileText, message.substr(at + quoted.size(), message.rfind('\'') - at - quoted.size()));
+            long line = 0;
+            if (at != std::string::npos) {
+                line = lineHolding(fileText, message.substr(at + quoted.size(), message.rfind('\'') - at - quoted.size()));
+            } else if (const auto* named = dynamic_cast<const po::error_with_option_name*>(&e)) {
+                // An unknown key, or one given twice: the line of the (second) one.
+                const bool repeated = dynamic_cast<const po::multiple_occurrences*>(&e) != nullptr;
+                line = lineOf(*path, named->get_option_name(), repeated ? 2 : 1);
+            }
             throw InputError(*path, line, message);
         }
         c.sourceFile = *path;

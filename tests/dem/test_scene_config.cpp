@@ -43,13 +43,21 @@ TEST(SceneConfigParser, OverridesWinAndPathsAreRelativeToTheSceneFile) {
 }
 
 TEST(SceneConfigParser, BadInputNamesTheFileAndTheKey) {
-    const std::string path = writeScene("bad.ini", "[soil]\nfriction = 25\n");
+    // An unknown key, and a key given twice, are named at their line (the second one's for a repeat).
+    const std::string path = writeScene("bad.ini", "# a scene\n[soil]\nfriction = 25\n");
     try {
         loadScene(path);
         FAIL() << "unknown key accepted";
     } catch (const sylva::InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("bad.ini"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("bad.ini:3:"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("soil.friction"), std::string::npos);
+    }
+    try {
+        loadScene(writeScene("twice.ini", "[soil]\nfriction_deg = 25\n\n[block]\nshape = cube\n[soil]\nfriction_deg = 30\n"));
+        FAIL() << "a key given twice accepted";
+    } catch (const sylva::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("twice.ini:7:"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("soil.friction_deg"), std::string::npos) << e.what();
     }
     EXPECT_THROW(loadScene(writeScene("bad2.ini", "[soil]\nkn_n_m = stiff\n")), sylva::InputError);
     EXPECT_THROW(sceneFromOverrides({"block.shape=pyramid"}), sylva::InputError);

@@ -51,12 +51,13 @@ struct Knob {
 };
 
 // Each knob at a finer and a cheaper value than its default (SceneConfig.hpp); integration.stem_safety
-// defaults to 0.95, as close to the stems' stable limit as it goes, so its second value is the default itself.
+// defaults to 0.95, as close to the stems' stable limit as it goes, so its second value is the default itself;
+// stem.upper_spacing_factor defaults to its fine end (1, the uniform stem), so both its values are cheaper.
 const std::vector<Knob> kKnobs = {
     {"integration.safety", {"0.15", "0.6"}},
     {"integration.stem_safety", {"0.4", "0.95"}},
     {"stem.node_spacing_m", {"0.25", "1.0"}},
-    {"stem.upper_node_spacing_m", {"0", "2"}},
+    {"stem.upper_spacing_factor", {"2", "4"}},  // its default, 1, is its fine end
     {"forest.wake_margin_m", {"0.05", "0.3"}},
     {"forest.sleep_after_s", {"0.0125", "0.1"}},
     {"forest.return_horizon_s", {"0.05", "0.4"}},
@@ -68,7 +69,7 @@ const std::vector<Knob> kKnobs = {
 // resolution; its rows show that sensitivity against this reference (docs/accuracy.md).
 const std::vector<std::string> kReference = {
     "integration.safety=0.075", "integration.stem_safety=0.4", "forest.wake_margin_m=0.3", "forest.sleep_after_s=1.0",
-    "forest.return_horizon_s=0.4", "stem.upper_node_spacing_m=0",
+    "forest.return_horizon_s=0.4",
 };
 
 struct Setting {

@@ -54,11 +54,11 @@ std::vector<double> Stem::connectionLengths(double height, const StemParams& p) 
         lengths.insert(lengths.end(), n, span / n);
     };
     std::vector<double> lengths;
-    const double zone = p.upperNodeSpacing > p.nodeSpacing ? std::min(p.struckZone, height) : height;
+    const double zone = p.upperSpacingFactor > 1 ? std::min(p.struckZone, height) : height;
     cut(zone, p.nodeSpacing, lengths);
     if (height > zone) {
         const double lower = lengths.back();
-        cut(height - zone, p.upperNodeSpacing, lengths);
+        cut(height - zone, p.upperSpacingFactor * p.nodeSpacing, lengths);
         // Connections above the zone shorter than below it would shorten the step for nothing: a stem
         // barely taller than the zone is cut at the node spacing all the way up.
         if (lengths.back() < lower) {

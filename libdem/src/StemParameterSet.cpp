@@ -26,7 +26,6 @@ void apply(StemParameterSet set, StemParams& stem, StemContactParams& contact) {
     stem.root.anchorage = RootAnchorage::StemWeight;    // "Anchorage": M_a = C_reg x stem mass
     stem.root.failureRotation = 25 * std::acos(-1.0) / 180;  // "The root plate lets go"
     stem.axialSoftening = 2;                            // "Time step": the axial springs softened
-    stem.upperNodeSpacing = 1;                          // "A graded stem": coarser above the struck zone
 }
 
 StemParams stemParameters(StemParameterSet set) {

@@ -32,7 +32,7 @@ void validate(const StemParams& p) {
     require(std::isfinite(p.density) && p.density > 0, "density (kg/m^3)", p.density, "> 0");
     require(p.poisson > -1 && p.poisson < 0.5, "Poisson ratio", p.poisson, "in (-1, 0.5)");
     require(std::isfinite(p.nodeSpacing) && p.nodeSpacing > 0, "node spacing (m)", p.nodeSpacing, "> 0");
-    require(std::isfinite(p.upperNodeSpacing) && p.upperNodeSpacing >= 0, "upper node spacing (m)", p.upperNodeSpacing, ">= 0");
+    require(std::isfinite(p.upperSpacingFactor) && p.upperSpacingFactor >= 1, "upper spacing factor", p.upperSpacingFactor, ">= 1");
     require(std::isfinite(p.struckZone) && p.struckZone > 0, "struck zone (m)", p.struckZone, "> 0");
     require(std::isfinite(p.tipDiameter) && p.tipDiameter >= 0, "tip diameter (m)", p.tipDiameter, ">= 0");
     require(std::isfinite(p.axialSoftening) && p.axialSoftening >= 1, "axial softening", p.axialSoftening, ">= 1");

@@ -76,12 +76,12 @@ std::string forestFile() {
 }  // namespace
 
 TEST(SceneExportCli, WritesEveryStemAtRestNodeByNode) {
-    // stem.node_spacing_m, stem.upper_node_spacing_m, stem.struck_zone_m, stem.tip_diameter_m (default)
-    const double spacing = 0.8, upper = 1.5, zone = 4, tip = 0.01;
+    // stem.node_spacing_m, stem.upper_spacing_factor, stem.struck_zone_m, stem.tip_diameter_m (default)
+    const double spacing = 0.75, upper = 1.5, zone = 4, tip = 0.01;  // upper: 2 x the node spacing
     const std::string out = (exportDir() / "forest-out").string();
     std::filesystem::remove_all(out);
     const CliRun r = sceneExport("--scene " + slopeScene() + " --forest " + forestFile() +
-                                 " --set stem.node_spacing_m=0.8 --set stem.upper_node_spacing_m=1.5 --out " + out);
+                                 " --set stem.node_spacing_m=0.75 --set stem.upper_spacing_factor=2 --out " + out);
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_NE(r.output.find("3 stems"), std::string::npos) << r.output;
     const auto stems = readStems(out + "/stems.csv");
@@ -89,12 +89,12 @@ TEST(SceneExportCli, WritesEveryStemAtRestNodeByNode) {
     for (const auto& t : kForest) {
         ASSERT_EQ(stems.count(t.id), 1u) << t.id;
         const auto& nodes = stems.at(t.id);
-        // 5 connections of 0.8 m up to 4 m, then ceil((H - 4) / 1.5) equal ones: 6, 9 and 11 for 12,
-        // 17.3 and 20.25 m.
-        const std::size_t lower = static_cast<std::size_t>(std::lround(zone / spacing));
+        // 6 equal connections (0.67 m) up to 4 m, then ceil((H - 4) / 1.5) equal ones: 6, 9 and 11 for
+        // 12, 17.3 and 20.25 m.
+        const std::size_t lower = 6;
         const std::size_t above = static_cast<std::size_t>(std::ceil((t.heightM - zone) / upper));
         const auto restHeight = [&](std::size_t k) {
-            return k <= lower ? k * spacing : zone + (t.heightM - zone) * static_cast<double>(k - lower) / above;
+            return k <= lower ? k * zone / lower : zone + (t.heightM - zone) * static_cast<double>(k - lower) / above;
         };
         ASSERT_EQ(nodes.size(), lower + above + 1) << t.id;
         // 9 significant digits in the file: 1e-6 m on coordinates below 100 m.

@@ -110,7 +110,7 @@ TEST(StemBuild, AGradedStemIsCutFinerInTheStruckZoneAndKeepsItsMass) {
     const StemGeometry g = beechStem(30);  // 21.7 m high, crown from 12.9 m
     StemParams p;
     p.nodeSpacing = 0.5;
-    p.upperNodeSpacing = 1.5;
+    p.upperSpacingFactor = 3;  // 1.5 m
     p.struckZone = 4;
     const Stem uniform(g, StemParams{}, Vec3::Zero(), StemFoot::RootSpring);
     const Stem graded(g, p, Vec3::Zero(), StemFoot::RootSpring);
@@ -166,9 +166,9 @@ TEST(StemBuild, ImpossibleStemsAreInputErrors) {
     }
     {
         StemParams q = p;
-        q.upperNodeSpacing = -1;
-        EXPECT_TRUE(contains(buildError(g, q), "upper node spacing"));
-        q.upperNodeSpacing = 1.5;
+        q.upperSpacingFactor = 0.5;
+        EXPECT_TRUE(contains(buildError(g, q), "upper spacing factor"));
+        q.upperSpacingFactor = 3;
         q.struckZone = 0;
         EXPECT_TRUE(contains(buildError(g, q), "struck zone"));
     }

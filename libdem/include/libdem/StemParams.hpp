@@ -55,11 +55,11 @@ struct StemParams {
     double poisson = 0.3;        // nu: not in the paper; G = MOE / (2 (1 + nu))
     double nodeSpacing = 0.5;    // m, upper bound: the struck zone is cut into ceil(zone / spacing) equal connections
     // Above the struck zone (the foot to `struckZone`, where blocks hit stems and hinges form) the stem
-    // may be cut coarser, at most `upperNodeSpacing` apart: there it only swings, and its nodes are
-    // most of a tall stem's. 0 (or anything not above nodeSpacing): the whole stem at nodeSpacing,
-    // as the paper's. A resolution like the node spacing (docs/model-stems.md, "A graded stem").
-    double upperNodeSpacing = 0;  // m
-    double struckZone = 4;        // m above the foot
+    // may be cut coarser, at most upperSpacingFactor x nodeSpacing apart: there it only swings, and its
+    // nodes are most of a tall stem's. 1: the whole stem at nodeSpacing, as the paper's. Refining the
+    // node spacing refines both parts. A resolution (docs/model-stems.md, "A graded stem").
+    double upperSpacingFactor = 1;
+    double struckZone = 4;  // m above the foot
     double tipDiameter = 0.01;   // m, diameter of the truncated cone at H_T (docs/model-stems.md)
     // The axial springs' stiffness MOE A / l is divided by this. A numerical device, not wood: the
     // axial wave, l sqrt(rho / MOE), limits the explicit step while the bending allows 1.8-4.5 times more at 0.5 m,

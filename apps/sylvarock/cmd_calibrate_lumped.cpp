@@ -33,7 +33,11 @@ std::vector<double> readRunouts(const std::string& path, const dem::Scene& scene
     const dem::SoilBed& bed = scene.soil();
     // Along the surface, no path is longer than the bed's diagonal over the cosine of a 70 degree slope.
     const double longest = 3 * std::hypot(bed.xmax() - bed.xmin(), bed.ymax() - bed.ymin());
-    const std::set<std::string> reasons{"rest", "left_domain", "time_limit", "failed"};
+    std::set<std::string> reasons;
+    for (const auto r : {dem::StopReason::Rest, dem::StopReason::LeftDomain, dem::StopReason::TimeLimit, dem::StopReason::Failed})
+        reasons.insert(dem::toString(r));
+    std::string listed;
+    for (const auto& r : reasons) listed += (listed.empty() ? "" : ", ") + r;
     std::map<long, long> seen;  // run -> line
     std::vector<double> out;
     for (std::size_t i = 0; i < t.rows(); ++i) {
@@ -44,8 +48,8 @@ std::vector<double> readRunouts(const std::string& path, const dem::Scene& scene
         if (impacts && !t.text(i, *impacts).empty() && t.number(i, *impacts) > 0)
             t.fail(i, *impacts, "this run hit trees: calibrate on a campaign without forest (simulate with no --forest)");
         if (!reasons.count(t.text(i, reason)))
-            t.fail(i, reason, "stop reason '" + t.text(i, reason) + "' is not one simulate writes (rest, left_domain, time_limit, failed)");
-        if (t.text(i, reason) == "failed") continue;
+            t.fail(i, reason, "stop reason '" + t.text(i, reason) + "' is not one simulate writes (" + listed + ")");
+        if (t.text(i, reason) == dem::toString(dem::StopReason::Failed)) continue;
         const double x = t.number(i, runout);
         if (!(x >= 0 && x <= longest))
             t.fail(i, runout, "run-out " + t.text(i, runout) + " m: outside 0 to " + std::to_string(static_cast<long>(longest)) +

@@ -130,7 +130,7 @@ int runGenerate(int argc, const char* const* argv) {
         const stand::GeneratedForest g = stand::generateForest(catalogue, extent, settings);
         // An empty forest would go on into simulate or assess as a forest that stops nothing.
         if (g.forest.trees.empty())
-            throw InputError("--extent " + vm["extent"].as<std::string>() + ": " + (g.warnings.empty() ? "no stem drawn" : g.warnings.front()));
+            throw InputError("--extent " + vm["extent"].as<std::string>() + ": " + (g.tooSmall.empty() ? "no stem drawn" : g.tooSmall));
         for (const auto& w : g.warnings) std::cerr << "sylvarock generate: warning: " << w << "\n";
         const std::string path = realisationPath(vm["out"].as<std::string>(), k, count);
         stand::writeForestCsv(path, g.forest);

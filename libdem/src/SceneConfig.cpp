@@ -234,12 +234,12 @@ SceneKeys::SceneKeys(StemParameterSet set) : parameterSet(name(set)) {
     k.number("output.trajectory_interval_s", c.trajectoryInterval, aboveUpTo(0, 3600, "s"), "trajectory sampling");
 }
 
-// Line of `key` ("section.key") in an INI file, 0 if not found: errors point at it.
-long lineOf(const std::string& path, const std::string& key, int occurrence = 1) {
+// Line of `key` ("section.key") in an INI file's text, 0 if not found: errors point at it.
+long lineOf(const std::string& text, const std::string& key, int occurrence = 1) {
     const auto dot = key.rfind('.');
     const std::string section = dot == std::string::npos ? "" : key.substr(0, dot);
     const std::string name = key.substr(dot == std::string::npos ? 0 : dot + 1);
-    std::ifstream in(path);
+    std::istringstream in(text);
     std::string line, current;
     for (long n = 1; std::getline(in, line); ++n) {
         const auto first = line.find_first_not_of(" \t");
@@ -255,16 +255,17 @@ long lineOf(const std::string& path, const std::string& key, int occurrence = 1)
     return 0;
 }
 
-// A refusal of `key` names where it was given: on --set (`fromSet`), or at its line of the file.
+// A refusal of `key` names where it was given: on --set (`fromSet`), or at its line of the file
+// `path`, whose text is `fileText`.
 InputError keyError(const std::string& key, const std::string& what, const std::set<std::string>& fromSet,
-                    const std::string* path) {
+                    const std::string* path, const std::string& fileText) {
     if (fromSet.count(key) || !path) return InputError("--set " + what);
-    return InputError(*path, lineOf(*path, key), what);
+    return InputError(*path, lineOf(fileText, key), what);
 }
 
 // Each number given (not defaulted) must lie in its range.
 void checkRanges(const KeyTable& k, const po::variables_map& vm, const std::set<std::string>& fromSet,
-                 const std::string* path) {
+                 const std::string* path, const std::string& fileText) {
     for (const NumericKey& n : k.numbers()) {
         const auto it = vm.find(n.name);
         if (it == vm.end() || it->second.defaulted() || inside(n.range, *n.value)) continue;
@@ -274,7 +275,7 @@ void checkRanges(const KeyTable& k, const po::variables_map& vm, const std::set<
         what += describe(n.range);
         const char* hint = !std::isfinite(v) ? "" : v <= n.range.lo ? n.range.tooLow : n.range.tooHigh;
         if (*hint) what += std::string(" (") + hint + ")";
-        throw keyError(n.name, what, fromSet, path);
+        throw keyError(n.name, what, fromSet, path, fileText);
     }
 }
 
@@ -340,7 +341,7 @@ StemParameterSet parameterSetOf(const std::string* path, const std::string& text
         return parseStemParameterSet(set);
     } catch (const InputError& e) {
         if (fromSet || !path) throw InputError(std::string("--set ") + e.what());
-        throw InputError(*path, lineOf(*path, "stem.parameters"), e.what());
+        throw InputError(*path, lineOf(text, "stem.parameters"), e.what());
     }
 }
 
@@ -374,15 +375,15 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
             } else if (const auto* named = dynamic_cast<const po::error_with_option_name*>(&e)) {
                 // An unknown key, or one given twice: the line of the (second) one.
                 const bool repeated = dynamic_cast<const po::multiple_occurrences*>(&e) != nullptr;
-                line = lineOf(*path, named->get_option_name(), repeated ? 2 : 1);
+                line = lineOf(fileText, named->get_option_name(), repeated ? 2 : 1);
             }
             throw InputError(*path, line, message);
         }
         c.sourceFile = *path;
     }
     po::notify(vm);
-    checkRanges(keys.table, vm, fromSet, path);
-    const auto refuse = [&](const std::string& key, const std::string& what) { return keyError(key, what, fromSet, path); };
+    checkRanges(keys.table, vm, fromSet, path, fileText);
+    const auto refuse = [&](const std::string& key, const std::string& what) { return keyError(key, what, fromSet, path, fileText); };
     try {
         c.block.shape = parseBlockShape(shape);
     } catch (const InputError& e) {

@@ -86,6 +86,10 @@ public:
     }
 
     void warn(std::string message) { result_.warnings.push_back(std::move(message)); }
+    void tooSmall(const std::string& message) {
+        result_.tooSmall = message;
+        warn(message);
+    }
     GeneratedForest take() { return std::move(result_); }
 
 private:
@@ -150,7 +154,7 @@ GeneratedForest generateForest(const StandCatalogue& stand, const Window& extent
         std::ostringstream what;
         what << "an extent of " << extent.area() << " m2 at " << stand.stemsPerHa() << " stems/ha holds " << expected
              << " stems, not one: none drawn (at least " << 0.5e4 / stand.stemsPerHa() << " m2 holds one)";
-        builder.warn(what.str());
+        builder.tooSmall(what.str());
     }
 
     ForestStructure structure = settings.structure;

@@ -35,6 +35,7 @@ struct GeneratedForest {
     std::size_t stools = 0;             // number of stools written
     std::size_t stemsInStools = 0;
     std::vector<std::string> warnings;  // e.g. "aggregated asked for a stand without stools"
+    std::string tooSmall;               // why the extent holds no stem at the stand's density (also a warning); empty if it holds one
 };
 
 // Largest forest generated: 2e7 stems (~2 GB as a Scene's stems; a 200 km2 forest at 1 000 stems/ha).

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 
+#include "libdem/ConnectionTouch.hpp"
 #include "libdem/SegmentGeometry.hpp"
 #include "libdem/SphereContact.hpp"
 
@@ -52,6 +53,13 @@ bool fusedAtRest(const PlacedTree& a, std::size_t ca, const Stem& sa, const Plac
     return (a.foot - b.foot).head<2>().norm() < 0.5 * (sa.connectionDiameter(ca) + sb.connectionDiameter(cb));
 }
 
+// The piece of a broken stem that connection c belongs to, named by its lowest connection (the
+// one above the nearest broken one below c; 0 for the standing stem).
+std::uint32_t pieceStart(const Stem& s, std::size_t c) {
+    while (c > 0 && !s.broken(c - 1)) --c;
+    return static_cast<std::uint32_t>(c);
+}
+
 }  // namespace
 
 // A point near connection c, at parameter t of its axis: it moves with the axis point
@@ -67,6 +75,13 @@ Vec3 ForestMotion::connectionVelocity(const Stem& s, std::size_t c, double t, co
 // next detections (`approach`), so that their contact begins at the stem's step: at the block's
 // own step it would begin centimetres deep.
 void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec3>& centres, double approach) {
+    // A connection that broke under a contact made the part above it a piece of its own: the contact
+    // goes on with it, its history (tangential spring, dent, onset offset) kept. Begun afresh, it
+    // took on at most kMaxOnsetOverlap of its overlap, and the block sank into the falling top.
+    blockTouches_.rekey([this](BlockStemTouch& touch, ContactKey key) {
+        touch.piece = key[2] = pieceStart(awake(touch.tree)->stem, touch.connection);
+        return key;
+    });
     blockTouches_.beginDetection();
     const Vec3 omega = block.angularVelocity();
     for (auto& a : awake_) {
@@ -81,7 +96,7 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
         std::uint32_t piece = 0;  // pieces of a broken stem move apart: each has its own contacts
         for (std::size_t c = 0; c < s.connectionCount(); ++c) {
             if (s.broken(c)) {
-                ++piece;
+                piece = static_cast<std::uint32_t>(c + 1);
                 continue;
             }
             const Vec3& a0 = s.position[c];
@@ -223,14 +238,9 @@ void ForestMotion::detectStemStem() {
         } else {
             pair.checkedStill = false;  // what a check found before either moved no longer holds
         }
-        if (A.stem.broken(ca) || B.stem.broken(cb)) continue;
-        const Vec3 &a0 = A.stem.position[ca], &a1 = A.stem.position[ca + 1];
-        const Vec3 &b0 = B.stem.position[cb], &b1 = B.stem.position[cb + 1];
-        const double ra = 0.5 * A.stem.connectionDiameter(ca), rb = 0.5 * B.stem.connectionDiameter(cb);
-        const auto [s, t] = closestBetweenSegments(a0, a1, b0, b1);
-        ContactGeometry found;
-        if (!touchSpheres(a0 + s * (a1 - a0), ra, b0 + t * (b1 - b0), rb, found)) continue;
-        const double overlap = found.overlap;
+        const std::optional<ConnectionTouch> found = touchConnections(A.stem, ca, B.stem, cb);
+        if (!found) continue;
+        const double s = found->s, t = found->t, overlap = found->geometry.overlap;
         // Stem/stem contacts are frictionless (Table 2: phi_t-t = 0), so they carry no history worth
         // moving along the stems: one contact per pair of connections.
         StemStemTouch* touch = stemTouches_.find(key);
@@ -239,7 +249,7 @@ void ForestMotion::detectStemStem() {
             touch = &stemTouches_.add(key, StemStemTouch{A.tree, B.tree, ca, cb, s, t, startedAt(overlap), ContactGeometry{}, false, fused});
         }
         ContactGeometry& g = touch->geometry;
-        g = found;
+        g = found->geometry;
         g.overlap = std::max(0.0, overlap - touch->history.overlapOffset);
         g.relativeVelocity = connectionVelocity(A.stem, ca, s, g.point) - connectionVelocity(B.stem, cb, t, g.point);
         g.meanSpinNormal = 0.5 * ((1 - s) * A.stem.angularVelocity[ca] + s * A.stem.angularVelocity[ca + 1] +

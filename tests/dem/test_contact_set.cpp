@@ -56,3 +56,25 @@ TEST(ContactSet, FoundAgainKeepsItsHistoryNotFoundEndsOrderIsKept) {
     EXPECT_EQ(set.find(d), nullptr);
     EXPECT_EQ(set.size(), 1u);
 }
+
+// A stem breaking under a block's contact makes the part above a piece of its own, and the contact's
+// key (block sphere, tree, piece) changes while its history goes on (ForestMotion::detectBlockStem):
+// found by the new key only, with its history, in the order it began.
+TEST(ContactSet, ARekeyedContactKeepsItsHistoryAndPlace) {
+    ContactSet<Touch> set;
+    const ContactKey a{0, 5, 0, 0}, b{1, 5, 0, 0}, aAbove{0, 5, 3, 0};
+    set.add(a, Touch{10, true});
+    set.add(b, Touch{20, true});
+    set.rekey([&](Touch& t, ContactKey key) { return t.history == 10 ? aAbove : key; });
+    EXPECT_EQ(set.find(a), nullptr);
+    ASSERT_NE(set.find(aAbove), nullptr);
+    EXPECT_EQ(set.find(aAbove)->history, 10);
+    EXPECT_EQ(set.find(b)->history, 20);
+    EXPECT_EQ(histories(set), (std::vector<int>{10, 20}));
+    // Swept after, the index still follows the new key.
+    set.beginDetection();
+    set.find(aAbove)->touching = true;
+    set.sweep();
+    EXPECT_EQ(histories(set), (std::vector<int>{10}));
+    EXPECT_EQ(set.find(aAbove)->history, 10);
+}

@@ -1,9 +1,13 @@
-// Block/stem and stem/stem contacts (Eqs. 20-23) and the segment geometry they use.
+// Block/stem and stem/stem contacts (Eqs. 20-23), the segment geometry they use and the stem/stem
+// narrow phase.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
+#include <vector>
+
+#include "libdem/ConnectionTouch.hpp"
 #include "libdem/SegmentGeometry.hpp"
 #include "libdem/StemContact.hpp"
 
@@ -105,4 +109,84 @@ TEST(SegmentGeometry, ClosestPointsMatchABruteForceSearch) {
         const double tp = closestOnSegment(p, a0, a1);
         for (int i = 0; i <= 100; ++i) EXPECT_LE((a0 + tp * (a1 - a0) - p).norm(), (a0 + i / 100.0 * (a1 - a0) - p).norm() + 1e-12);
     }
+}
+
+namespace {
+
+struct FoundTouch {
+    std::size_t ca, cb;
+    ConnectionTouch touch;
+};
+
+std::vector<FoundTouch> allTouches(const Stem& A, const Stem& B) {
+    std::vector<FoundTouch> out;
+    for (std::size_t ca = 0; ca < A.connectionCount(); ++ca)
+        for (std::size_t cb = 0; cb < B.connectionCount(); ++cb)
+            if (const auto t = touchConnections(A, ca, B, cb)) out.push_back({ca, cb, *t});
+    return out;
+}
+
+// A 10 cm stem lying along y at height z with its connection `middle` centred on y = 0, x = x.
+Stem lyingAcross(double x, double z, std::size_t middle) {
+    Stem B(beechStem(10), StemParams{}, Vec3::Zero(), StemFoot::Clamped);
+    for (std::size_t i = 0; i < B.nodeCount(); ++i)
+        B.position[i] = Vec3(x, B.restHeight(i) - 0.5 * (B.restHeight(middle) + B.restHeight(middle + 1)), z);
+    return B;
+}
+
+}  // namespace
+
+// A node of one stem pressed against another stem is one contact, not one per connection that
+// holds it: both connections find it, at their ends, and counted twice it pushed twice as hard.
+TEST(ConnectionTouch, ANodeAgainstAStemTouchesItOnce) {
+    Stem A(beechStem(20), StemParams{}, Vec3::Zero(), StemFoot::Clamped);
+    const std::size_t k = 4;  // 2 m up: bent 5 cm towards the lying stem, both its connections end nearest there
+    A.position[k].x() += 0.05;
+    const double overlap = 0.004;
+    const double rA = 0.5 * A.connectionDiameter(k - 1);
+    const Stem B0 = lyingAcross(0, 0, 3);
+    const double rBmid = 0.5 * B0.connectionDiameter(3);
+    const Stem B = lyingAcross(A.position[k].x() + rA + rBmid - overlap, A.position[k].z(), 3);
+    const auto found = allTouches(A, B);
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].ca, k - 1);  // the thicker connection below the node owns it
+    EXPECT_EQ(found[0].cb, 3u);
+    EXPECT_DOUBLE_EQ(found[0].touch.s, 1.0);
+    EXPECT_NEAR(found[0].touch.geometry.overlap, overlap, 1e-12);
+    EXPECT_NEAR(found[0].touch.geometry.normal.x(), -1.0, 1e-12);  // from B to A
+
+    // A node of the lying stem against the standing one: the same from B's side.
+    Stem C(beechStem(10), StemParams{}, Vec3::Zero(), StemFoot::Clamped);
+    const std::size_t j = 3;
+    const double rC = 0.5 * C.connectionDiameter(j - 1), zA = 0.5 * (A.restHeight(1) + A.restHeight(2));
+    const double rAmid = 0.5 * A.connectionDiameter(1);
+    A.position[k].x() -= 0.05;  // straight again
+    for (std::size_t i = 0; i < C.nodeCount(); ++i)
+        C.position[i] = Vec3(rAmid + rC - overlap, C.restHeight(i) - C.restHeight(j), zA);
+    C.position[j].x() -= 0.02;  // bent towards A at node j
+    const auto fromB = allTouches(A, C);
+    ASSERT_EQ(fromB.size(), 1u);
+    EXPECT_EQ(fromB[0].ca, 1u);
+    EXPECT_EQ(fromB[0].cb, j - 1);
+    EXPECT_DOUBLE_EQ(fromB[0].touch.t, 1.0);
+}
+
+// Touches away from the nodes are all found: a connection's lower node is only given up to an intact
+// connection below it.
+TEST(ConnectionTouch, ATouchInsideAConnectionOrAtTheFootIsKept) {
+    const Stem A(beechStem(20), StemParams{}, Vec3::Zero(), StemFoot::Clamped);
+    const double overlap = 0.003, rA = 0.5 * A.connectionDiameter(2);
+    const Stem B0 = lyingAcross(0, 0, 2);
+    const Stem B = lyingAcross(rA + 0.5 * B0.connectionDiameter(2) - overlap, 0.5 * (A.restHeight(2) + A.restHeight(3)), 2);
+    const auto found = allTouches(A, B);
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].ca, 2u);
+    EXPECT_NEAR(found[0].touch.s, 0.5, 1e-9);
+    EXPECT_NEAR(found[0].touch.geometry.overlap, overlap, 1e-12);
+    // At the foot there is no connection below: the first one keeps its lower node.
+    const Stem atFoot = lyingAcross(0.5 * A.connectionDiameter(0) + 0.5 * B0.connectionDiameter(2) - overlap, 0, 2);
+    const auto foot = allTouches(A, atFoot);
+    ASSERT_EQ(foot.size(), 1u);
+    EXPECT_EQ(foot[0].ca, 0u);
+    EXPECT_DOUBLE_EQ(foot[0].touch.s, 0.0);
 }

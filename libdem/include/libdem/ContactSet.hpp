@@ -45,6 +45,20 @@ public:
         touches_.push_back(std::move(touch));
         return touches_.back();
     }
+    // Gives each contact the key `keyOf(touch, key)` returns: the features a contact is known by
+    // changed (a stem broke under it) while its history goes on.
+    template <class KeyOf>
+    void rekey(KeyOf keyOf) {
+        bool changed = false;
+        for (std::size_t i = 0; i < touches_.size(); ++i) {
+            const ContactKey key = keyOf(touches_[i], keys_[i]);
+            changed = changed || key != keys_[i];
+            keys_[i] = key;
+        }
+        if (!changed) return;
+        index_.clear();
+        for (std::size_t i = 0; i < keys_.size(); ++i) index_.emplace(keys_[i], i);
+    }
     // After a detection: the contacts not found again have ended.
     void sweep() {
         eraseIf([](const Touch& t) { return !t.touching; });

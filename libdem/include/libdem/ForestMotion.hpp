@@ -110,6 +110,8 @@ private:
     // A block sphere against a stem, or against one piece of a broken stem (the deepest of its
     // connections this step).
     struct BlockStemTouch {
+        // piece: the lowest connection of the stem's piece it touches (0: the standing stem); a
+        // piece that breaks off above keeps the contacts on it (detectBlockStem).
         std::uint32_t blockSphere, tree, piece;
         std::size_t connection;
         double t;           // where along the connection

@@ -3,15 +3,19 @@
 // outside check (extent 130,0,630,200, seed 3), then runs the same campaign with and without it on
 // the paper's scene: the ratio of the two is what the forest costs, and where the forested steps'
 // time goes, phase by phase.
-//   bench_forest [runs] [threads] [seed]
+//   bench_forest [runs] [threads] [seed] [section.key=value ...]
+// The scene keys after the seed change the forested and the bare scene alike (the stems' options,
+// e.g. stem.upper_spacing_factor=2), as simulate's --set does.
 #include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <numeric>
 #include <string>
+#include <vector>
 
 #include "libdem/Campaign.hpp"
 #include "libdem/CampaignSummary.hpp"
@@ -64,7 +68,14 @@ int main(int argc, char** argv) {
     auto forest = stand::generateForest(stand, stand::Window::rectangle(130, 0, 630, 200), g).forest;
     const std::size_t stemCount = forest.trees.size();
 
-    const dem::SceneConfig config = dem::loadScene(data + "/scenes/no-forest.ini");
+    const std::vector<std::string> overrides(argv + std::min(argc, 4), argv + argc);
+    dem::SceneConfig config;
+    try {
+        config = dem::loadScene(data + "/scenes/no-forest.ini", overrides);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "bench_forest: %s\n", e.what());
+        return 2;
+    }
     const dem::Scene bare(config);
     const dem::Scene forested(config, std::move(forest));
 
@@ -73,7 +84,9 @@ int main(int argc, char** argv) {
     rusage ru{};
     getrusage(RUSAGE_SELF, &ru);
 
-    std::printf("MO1 aggregated, %zu stems over 10 ha; %d runs on %d threads, seed %lu\n", stemCount, runs, threads, seed);
+    std::printf("MO1 aggregated, %zu stems over 10 ha; %d runs on %d threads, seed %lu", stemCount, runs, threads, seed);
+    for (const auto& o : overrides) std::printf(", %s", o.c_str());
+    std::printf("\n");
     std::printf("%-10s %10s %14s %14s %10s %9s\n", "", "wall s", "CPU/run med s", "CPU/run p90 s", "Dist50 m", "impacts");
     for (const auto& [name, t] : {std::pair<const char*, const Timing&>{"no forest", without}, {"forest", with}})
         std::printf("%-10s %10.1f %14.3f %14.3f %10.1f %9ld\n", name, t.wall, dem::quantile(t.cpu, 0.5),

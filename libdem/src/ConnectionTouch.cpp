@@ -13,20 +13,26 @@ namespace {
 // point of two segments crossing at a node lands a rounding away from it.
 constexpr double kAtNode = 1e-9;
 
-bool belongsToTheConnectionBelow(const Stem& s, std::size_t c, double along) {
-    return along <= kAtNode && c > 0 && !s.broken(c - 1);
-}
-
 }  // namespace
 
-std::optional<ConnectionTouch> touchConnections(const Stem& A, std::size_t ca, const Stem& B, std::size_t cb) {
-    if (A.broken(ca) || B.broken(cb)) return std::nullopt;
-    const Vec3 &a0 = A.position[ca], &a1 = A.position[ca + 1];
-    const Vec3 &b0 = B.position[cb], &b1 = B.position[cb + 1];
+bool fusedAtRest(const PlantedStem& A, std::size_t ca, const PlantedStem& B, std::size_t cb) {
+    const double za0 = A.foot.z() + A.stem.restHeight(ca), za1 = A.foot.z() + A.stem.restHeight(ca + 1);
+    const double zb0 = B.foot.z() + B.stem.restHeight(cb), zb1 = B.foot.z() + B.stem.restHeight(cb + 1);
+    constexpr double kSameHeight = 1e-6;  // m: heights are sums of connection lengths, equal up to round-off
+    if (za1 < zb0 - kSameHeight || zb1 < za0 - kSameHeight) return false;  // sharing an end height counts
+    return (A.foot - B.foot).head<2>().norm() < 0.5 * (A.stem.connectionDiameter(ca) + B.stem.connectionDiameter(cb));
+}
+
+std::optional<ConnectionTouch> touchConnections(const PlantedStem& A, std::size_t ca, const PlantedStem& B, std::size_t cb) {
+    const Stem &sa = A.stem, &sb = B.stem;
+    if (sa.broken(ca) || sb.broken(cb)) return std::nullopt;
+    const Vec3 &a0 = sa.position[ca], &a1 = sa.position[ca + 1];
+    const Vec3 &b0 = sb.position[cb], &b1 = sb.position[cb + 1];
     ConnectionTouch touch{};
     std::tie(touch.s, touch.t) = closestBetweenSegments(a0, a1, b0, b1);
-    if (belongsToTheConnectionBelow(A, ca, touch.s) || belongsToTheConnectionBelow(B, cb, touch.t)) return std::nullopt;
-    const double ra = 0.5 * A.connectionDiameter(ca), rb = 0.5 * B.connectionDiameter(cb);
+    if (touch.s <= kAtNode && ca > 0 && !sa.broken(ca - 1) && !fusedAtRest(A, ca - 1, B, cb)) return std::nullopt;
+    if (touch.t <= kAtNode && cb > 0 && !sb.broken(cb - 1) && !fusedAtRest(A, ca, B, cb - 1)) return std::nullopt;
+    const double ra = 0.5 * sa.connectionDiameter(ca), rb = 0.5 * sb.connectionDiameter(cb);
     if (!touchSpheres(a0 + touch.s * (a1 - a0), ra, b0 + touch.t * (b1 - b0), rb, touch.geometry)) return std::nullopt;
     return touch;
 }

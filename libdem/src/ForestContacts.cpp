@@ -43,19 +43,11 @@ ContactHistory startedAt(double overlap) {
     return h;
 }
 
-// Stems of one stool stand so close that their cones meet near the foot: the connections of two
-// stems that overlap in the stems' rest shape are one fused stump, not a contact.
-bool fusedAtRest(const PlacedTree& a, std::size_t ca, const Stem& sa, const PlacedTree& b, std::size_t cb, const Stem& sb) {
-    const double za0 = a.foot.z() + sa.restHeight(ca), za1 = a.foot.z() + sa.restHeight(ca + 1);
-    const double zb0 = b.foot.z() + sb.restHeight(cb), zb1 = b.foot.z() + sb.restHeight(cb + 1);
-    constexpr double kSameHeight = 1e-6;  // m: heights are sums of connection lengths, equal up to round-off
-    if (za1 < zb0 - kSameHeight || zb1 < za0 - kSameHeight) return false;  // sharing an end height counts
-    return (a.foot - b.foot).head<2>().norm() < 0.5 * (sa.connectionDiameter(ca) + sb.connectionDiameter(cb));
-}
-
-// The piece of a broken stem that connection c belongs to, named by its lowest connection (the
-// one above the nearest broken one below c; 0 for the standing stem).
-std::uint32_t pieceStart(const Stem& s, std::size_t c) {
+// The piece of a broken stem that a contact at t along connection c is on, named by its lowest
+// connection (the one above the nearest broken one below c; 0 for the standing stem). A connection
+// that has just broken under the contact leaves it with the end it was nearer.
+std::uint32_t pieceStart(const Stem& s, std::size_t c, double t) {
+    if (s.broken(c) && t >= 0.5 && c + 1 < s.connectionCount()) return static_cast<std::uint32_t>(c + 1);
     while (c > 0 && !s.broken(c - 1)) --c;
     return static_cast<std::uint32_t>(c);
 }
@@ -75,11 +67,12 @@ Vec3 ForestMotion::connectionVelocity(const Stem& s, std::size_t c, double t, co
 // next detections (`approach`), so that their contact begins at the stem's step: at the block's
 // own step it would begin centimetres deep.
 void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec3>& centres, double approach) {
-    // A connection that broke under a contact made the part above it a piece of its own: the contact
-    // goes on with it, its history (tangential spring, dent, onset offset) kept. Begun afresh, it
-    // took on at most kMaxOnsetOverlap of its overlap, and the block sank into the falling top.
+    // A connection that broke below a contact, or under it, made a piece of its own: the contact
+    // goes on with the piece it is on, its history (tangential spring, dent, onset offset) kept.
+    // Begun afresh, it took on at most kMaxOnsetOverlap of its overlap, and the block sank into the
+    // falling top.
     blockTouches_.rekey([this](BlockStemTouch& touch, ContactKey key) {
-        touch.piece = key[2] = pieceStart(awake(touch.tree)->stem, touch.connection);
+        touch.piece = key[2] = pieceStart(awake(touch.tree)->stem, touch.connection, touch.t);
         return key;
     });
     blockTouches_.beginDetection();
@@ -93,12 +86,8 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
             a.nodeBoxSlack = 0;
         }
         if (a.nodeBox->exteriorDistance(block.position) > block.boundingRadius() + approach) continue;
-        std::uint32_t piece = 0;  // pieces of a broken stem move apart: each has its own contacts
         for (std::size_t c = 0; c < s.connectionCount(); ++c) {
-            if (s.broken(c)) {
-                piece = static_cast<std::uint32_t>(c + 1);
-                continue;
-            }
+            if (s.broken(c)) continue;
             const Vec3& a0 = s.position[c];
             const Vec3& a1 = s.position[c + 1];
             const double r = 0.5 * s.connectionDiameter(c);
@@ -121,6 +110,7 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
                 if (!touching) continue;
                 // One contact per (block sphere, stem piece): the deepest connection; its history
                 // moves with it from one connection to the next.
+                const std::uint32_t piece = pieceStart(s, c, t);
                 const ContactKey key{i, a.tree, piece, 0};
                 BlockStemTouch* touch = blockTouches_.find(key);
                 if (touch && touch->touching && touch->rawOverlap >= overlap) continue;
@@ -238,14 +228,15 @@ void ForestMotion::detectStemStem() {
         } else {
             pair.checkedStill = false;  // what a check found before either moved no longer holds
         }
-        const std::optional<ConnectionTouch> found = touchConnections(A.stem, ca, B.stem, cb);
+        const PlantedStem plantedA{A.stem, trees_.tree(A.tree).foot}, plantedB{B.stem, trees_.tree(B.tree).foot};
+        const std::optional<ConnectionTouch> found = touchConnections(plantedA, ca, plantedB, cb);
         if (!found) continue;
         const double s = found->s, t = found->t, overlap = found->geometry.overlap;
         // Stem/stem contacts are frictionless (Table 2: phi_t-t = 0), so they carry no history worth
         // moving along the stems: one contact per pair of connections.
         StemStemTouch* touch = stemTouches_.find(key);
         if (!touch) {
-            const bool fused = fusedAtRest(trees_.tree(A.tree), ca, A.stem, trees_.tree(B.tree), cb, B.stem);
+            const bool fused = fusedAtRest(plantedA, ca, plantedB, cb);
             touch = &stemTouches_.add(key, StemStemTouch{A.tree, B.tree, ca, cb, s, t, startedAt(overlap), ContactGeometry{}, false, fused});
         }
         ContactGeometry& g = touch->geometry;

@@ -118,11 +118,16 @@ struct FoundTouch {
     ConnectionTouch touch;
 };
 
-std::vector<FoundTouch> allTouches(const Stem& A, const Stem& B) {
+// B planted at `footB`; A at the origin, where it stands. A stem lying across A was planted 10 m
+// away unless said otherwise: no stool's stump.
+std::vector<FoundTouch> allTouches(const Stem& A, const Stem& B, const Vec3& footB = Vec3(10, 0, 0)) {
+    const Vec3 footA = Vec3::Zero();
     std::vector<FoundTouch> out;
     for (std::size_t ca = 0; ca < A.connectionCount(); ++ca)
-        for (std::size_t cb = 0; cb < B.connectionCount(); ++cb)
-            if (const auto t = touchConnections(A, ca, B, cb)) out.push_back({ca, cb, *t});
+        for (std::size_t cb = 0; cb < B.connectionCount(); ++cb) {
+            if (fusedAtRest({A, footA}, ca, {B, footB}, cb)) continue;  // ignored, as ForestMotion does
+            if (const auto t = touchConnections({A, footA}, ca, {B, footB}, cb)) out.push_back({ca, cb, *t});
+        }
     return out;
 }
 
@@ -162,13 +167,38 @@ TEST(ConnectionTouch, ANodeAgainstAStemTouchesItOnce) {
     const double rAmid = 0.5 * A.connectionDiameter(1);
     A.position[k].x() -= 0.05;  // straight again
     for (std::size_t i = 0; i < C.nodeCount(); ++i)
-        C.position[i] = Vec3(rAmid + rC - overlap, C.restHeight(i) - C.restHeight(j), zA);
-    C.position[j].x() -= 0.02;  // bent towards A at node j
+        C.position[i] = Vec3(rAmid + rC - overlap + 0.02, C.restHeight(i) - C.restHeight(j), zA);
+    C.position[j].x() -= 0.02;  // bent towards A at node j, into it by `overlap`; 16 mm clear elsewhere
     const auto fromB = allTouches(A, C);
     ASSERT_EQ(fromB.size(), 1u);
     EXPECT_EQ(fromB[0].ca, 1u);
     EXPECT_EQ(fromB[0].cb, j - 1);
     EXPECT_DOUBLE_EQ(fromB[0].touch.t, 1.0);
+    EXPECT_NEAR(fromB[0].touch.geometry.overlap, overlap, 1e-12);
+}
+
+// A stool's other stem, broken and lying across this one at a node (both planted at the same foot):
+// the connection below the node is fused with it at rest and takes no touch, so the connection above
+// keeps the node's. Handed down, the push was lost.
+TEST(ConnectionTouch, ANodeAboveAFusedStumpKeepsItsTouch) {
+    Stem A(beechStem(20), StemParams{}, Vec3::Zero(), StemFoot::Clamped);
+    const std::size_t k = 4;
+    A.position[k].x() += 0.05;  // bent towards the lying stem
+    const Stem B0 = lyingAcross(0, 0, 0);
+    // B's highest connection that ends below node k: level with A's connection below k, not above it.
+    std::size_t cb = 0;
+    while (B0.restHeight(cb + 2) < A.restHeight(k) - 1e-3) ++cb;
+    const Vec3 foot = Vec3::Zero();
+    ASSERT_TRUE(fusedAtRest({A, foot}, k - 1, {B0, foot}, cb));
+    ASSERT_FALSE(fusedAtRest({A, foot}, k, {B0, foot}, cb));
+    const double overlap = 0.004, rA = 0.5 * A.connectionDiameter(k), rB = 0.5 * B0.connectionDiameter(cb);
+    const Stem B = lyingAcross(A.position[k].x() + rA + rB - overlap, A.position[k].z(), cb);
+    const auto found = allTouches(A, B, foot);
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].ca, k);
+    EXPECT_EQ(found[0].cb, cb);
+    EXPECT_DOUBLE_EQ(found[0].touch.s, 0.0);
+    EXPECT_NEAR(found[0].touch.geometry.overlap, overlap, 1e-12);
 }
 
 // Touches away from the nodes are all found: a connection's lower node is only given up to an intact
@@ -189,4 +219,29 @@ TEST(ConnectionTouch, ATouchInsideAConnectionOrAtTheFootIsKept) {
     ASSERT_EQ(foot.size(), 1u);
     EXPECT_EQ(foot[0].ca, 0u);
     EXPECT_DOUBLE_EQ(foot[0].touch.s, 0.0);
+}
+
+// Above a break the node is the lowest of its piece: the connection above it keeps its touch.
+TEST(ConnectionTouch, ATouchAboveABreakIsKept) {
+    Stem A(beechStem(20), StemParams{}, Vec3::Zero(), StemFoot::Clamped);
+    const std::size_t k = 4;
+    // The stem folded at connection k - 1 (past the angle at which a connection is broken whatever
+    // its law), the piece above turned as one body so that no other connection bends.
+    for (std::size_t i = k; i < A.nodeCount(); ++i) A.orientation[i] = Quat(Eigen::AngleAxisd(2.0, Vec3::UnitY()));
+    std::vector<Vec3> force(A.nodeCount(), Vec3::Zero()), torque(A.nodeCount(), Vec3::Zero());
+    A.updateConnections(force, torque, 1e-5);
+    ASSERT_TRUE(A.broken(k - 1));
+    for (std::size_t c = 0; c < A.connectionCount(); ++c) {
+        if (c != k - 1) {
+            ASSERT_FALSE(A.broken(c)) << c;
+        }
+    }
+    const double overlap = 0.004, rA = 0.5 * A.connectionDiameter(k);
+    const Stem B0 = lyingAcross(0, 0, 3);
+    const Stem B = lyingAcross(rA + 0.5 * B0.connectionDiameter(3) - overlap, A.restHeight(k), 3);
+    const auto found = allTouches(A, B);
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].ca, k);
+    EXPECT_DOUBLE_EQ(found[0].touch.s, 0.0);
+    EXPECT_NEAR(found[0].touch.geometry.overlap, overlap, 1e-12);
 }

@@ -32,6 +32,17 @@ std::optional<double> parseNumber(const std::string& s) {
     return v;
 }
 
+// Earth's relief runs from -10 935 m (the Challenger Deep) to 8 849 m (Everest). A height beyond it
+// is a NODATA marker the file does not declare (GDAL's float32 -3.4e38, 1e30): read as terrain, it
+// made a wall kilometres high and run-outs of 1e38 m.
+bool onEarth(double z) { return z >= -11000 && z <= 9000; }
+
+std::string offEarth(double z) {
+    return "height " + readableNumber(z) + " m is beyond Earth's relief (-11 000 to 9 000 m): a NODATA value "
+           "the file does not declare? Declare it (NODATA_value in an ESRI ASCII header; gdal_translate -a_nodata "
+           "for other formats)";
+}
+
 std::string lower(std::string s) {
     for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     return s;
@@ -154,7 +165,9 @@ ElevationGrid ElevationGrid::readAsc(const std::string& path) {
             if (!v)
                 throw InputError(path, lineNo,
                                  "value " + std::to_string(c + 1) + ": '" + t[c] + "' is not a finite number");
-            row.push_back(nodata && *v == *nodata ? std::numeric_limits<double>::quiet_NaN() : *v);
+            const bool noData = nodata && *v == *nodata;
+            if (!noData && !onEarth(*v)) throw InputError(path, lineNo, "value " + std::to_string(c + 1) + ": " + offEarth(*v));
+            row.push_back(noData ? std::numeric_limits<double>::quiet_NaN() : *v);
         }
         fileRows.push_back(std::move(row));
         g.rowLine_.push_back(lineNo);
@@ -208,6 +221,12 @@ ElevationGrid ElevationGrid::fromValues(int columns, int rows, double x0, double
     g.cell_ = cellSize;
     g.z_ = std::move(z);
     g.source_ = std::move(source);
+    const auto off = std::find_if(g.z_.begin(), g.z_.end(), [](double v) { return !std::isnan(v) && !onEarth(v); });
+    if (off != g.z_.end()) {
+        const long i = off - g.z_.begin();
+        throw InputError(g.source_, 0, "cell (column " + std::to_string(i % columns + 1) + ", row " + std::to_string(rows - i / columns) +
+                                           ", counted from 1 at the north-west corner): " + offEarth(*off));
+    }
     g.complete_ = g.noDataCells() == 0;
     return g;
 }

@@ -111,6 +111,23 @@ TEST(ElevationGridReader, NonNumericValueNamesLineAndText) { expectError("grid_n
 
 TEST(ElevationGridReader, MissingFileIsAnInputError) { expectError("no_such_grid.asc", 0, "cannot open"); }
 
+// GDAL's float32 NODATA marker in a file that does not declare it: a wall 3.4e38 m deep, refused
+// where it stands rather than run (run-outs of 1e38 m), and likewise from a grid GDAL read.
+TEST(ElevationGridReader, AHeightBeyondEarthsReliefIsAnUndeclaredNodata) {
+    expectError("grid_undeclared_nodata.asc", 7, "value 3: height -3.40282e+38 m is beyond Earth's relief");
+    std::vector<double> z = {1, 2, 3, 4, 5, 1e30};  // row 0 the southernmost: the last value is the north-east cell
+    try {
+        ElevationGrid::fromValues(3, 2, 0.5, 0.5, 1, z, "dtm.tif");
+        ADD_FAILURE() << "1e30 m was accepted";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.file(), "dtm.tif");
+        EXPECT_TRUE(contains(e.what(), "column 3, row 1")) << e.what();
+    }
+    z.back() = 8848.9;  // Everest, and the Dead Sea shore below
+    z.front() = -430;
+    EXPECT_NO_THROW(ElevationGrid::fromValues(3, 2, 0.5, 0.5, 1, z, "dtm.tif"));
+}
+
 // grid_nodata.asc: 4 x 3 cells of 1 m, corner (0, 0); the NODATA cell is value 3 of line 8, the
 // middle row, so its centre is (2.5, 1.5).
 TEST(ElevationGridReader, NodataIsRejectedOnlyWhereAHeightNeedsIt) {

@@ -12,13 +12,15 @@ namespace sylva::dem {
 class ElevationGrid {
 public:
     // Errors (bad or missing header key, non-numeric value, a row with the wrong number of values,
-    // too few or too many rows) name the file and the line. NODATA cells are accepted here and
-    // rejected only where a height is needed (see requireDefined).
+    // too few or too many rows, a height beyond Earth's relief: an undeclared NODATA) name the file
+    // and the line. NODATA cells are accepted here and rejected only where a height is needed (see
+    // requireDefined).
     static ElevationGrid readAsc(const std::string& path);
     // A grid read by someone else (e.g. GDAL): `z` row-major with row 0 the southernmost, NaN for
     // NODATA; (x0, y0) the centre of the south-west cell. Errors about a NODATA cell then name the
     // cell (column and row counted from 1 at the north-west corner) in `source`.
-    // Throws std::invalid_argument on fewer than 2 x 2 cells, a size mismatch or a cell size <= 0.
+    // Throws std::invalid_argument on fewer than 2 x 2 cells, a size mismatch or a cell size <= 0;
+    // InputError naming the cell of a height beyond Earth's relief (an undeclared NODATA).
     static ElevationGrid fromValues(int columns, int rows, double x0, double y0, double cellSize, std::vector<double> z,
                                     std::string source);
 

@@ -33,6 +33,7 @@
 #include "libdem/BlockMotion.hpp"
 #include "libdem/CampaignSummary.hpp"
 #include "libdem/LumpedRun.hpp"
+#include "libdem/ReleaseInsideStem.hpp"
 #include "libdem/SimulationError.hpp"
 
 namespace fs = std::filesystem;
@@ -169,16 +170,34 @@ HazardPass runPass(const std::string& name, const BlockVolumeScenes& blocks, con
             run.recordTrajectory = true;
             // The terrain spans the DTM's cell centres: a point drawn in an edge cell's outer half is
             // moved onto that edge.
-            run.releaseAt = Eigen::Vector2d(std::clamp(centre.x() + rng.uniform(-0.5, 0.5) * cell, soil.xmin(), soil.xmax()),
-                                            std::clamp(centre.y() + rng.uniform(-0.5, 0.5) * cell, soil.ymin(), soil.ymax()));
+            const auto drawInCell = [&] {
+                return Eigen::Vector2d(std::clamp(centre.x() + rng.uniform(-0.5, 0.5) * cell, soil.xmin(), soil.xmax()),
+                                       std::clamp(centre.y() + rng.uniform(-0.5, 0.5) * cell, soil.ymin(), soil.ymax()));
+            };
+            run.releaseAt = drawInCell();
             // Drawn only with several classes: without them the runs are those of a single-volume map.
             if (blocks.classes() > 1) out.volumeClass = blocks.of(rng.uniform(0, 1));
             const dem::Scene& classScene = blocks.scene(out.volumeClass);
             const std::string which = name + " run " + std::to_string(i) + " (seed " + std::to_string(seed) + ", release cell column " +
                                       std::to_string(from.column + 1) + ", row " + std::to_string(from.row + 1) + ")";
+            const auto simulate = [&] {
+                // Blocks start where the release cell's trees leave room: a point inside a stem is drawn
+                // again (left out, the runs starting in dense forest were missing from the map).
+                constexpr int kDraws = 20;
+                for (int draw = 1;; ++draw) {
+                    try {
+                        return o.model == dem::Model::Dem ? dem::simulateBlock(classScene, static_cast<int>(i), seed, run)
+                                                          : dem::simulateLumped(classScene, static_cast<int>(i), seed, run);
+                    } catch (const dem::ReleaseInsideStem&) {
+                        if (draw == kDraws)
+                            throw InputError(std::to_string(kDraws) + " release points drawn in its cell all start inside a stem: "
+                                             "its trees fill the cell");
+                        run.releaseAt = drawInCell();
+                    }
+                }
+            };
             try {
-                const dem::RunResult r = o.model == dem::Model::Dem ? dem::simulateBlock(classScene, static_cast<int>(i), seed, run)
-                                                                     : dem::simulateLumped(classScene, static_cast<int>(i), seed, run);
+                const dem::RunResult r = simulate();
                 out.trace = traceRun(r, dtm, treeAt);
                 if (outputs.checkLines) out.crossings = crossCheckLines(r.trajectory, dtm, *outputs.lines);
                 if (outputs.paths) {

@@ -65,7 +65,11 @@ stand::Forest readTreeLayer(const std::string& path, const Dtm& dtm) {
 }  // namespace
 
 stand::Forest readTreePoints(const std::string& path, const Dtm& dtm) {
-    return endsWith(path, ".csv") ? stand::readForestCsv(path) : readTreeLayer(path, dtm);
+    if (!endsWith(path, ".csv")) return readTreeLayer(path, dtm);
+    stand::Forest forest = stand::readForestCsv(path);
+    // A header alone: the map would come out bare, as if the trees had been left out on purpose.
+    if (forest.trees.empty()) throw InputError(path, 0, "no tree in the file (to map without forest, leave out --trees)");
+    return forest;
 }
 
 

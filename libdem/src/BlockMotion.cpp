@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "libdem/ReleaseInsideStem.hpp"
 #include "libdem/SimulationError.hpp"
 #include "libdem/SphereContact.hpp"
 #include "libdem/StableStep.hpp"
@@ -54,9 +55,8 @@ void BlockMotion::refuseSoilTooSoft(const Scene& scene) {
         refuseSpringTooSoft(cfg.sourceFile, "soil.kn_n_m", cfg.soilContact.kn, weight, radius);
 }
 
-// A block that starts inside a stem begins with a contact spring that no motion loaded: the
-// stem's response to it is energy from nowhere (it stopped such runs at the first step, as
-// "energy grew"). Like a start inside the soil, it is a bad release, refused up front.
+// Like a start inside the soil, a start inside a stem is a bad release, refused up front
+// (ReleaseInsideStem.hpp): it stopped such runs at the first step, as "energy grew".
 void BlockMotion::refuseStartInsideStem(const Scene& scene) const {
     const TreeField& trees = scene.trees();
     if (trees.size() == 0) return;
@@ -77,7 +77,7 @@ void BlockMotion::refuseStartInsideStem(const Scene& scene) const {
             os << "the block is released inside stem " << tree.id << " (standing at " << where(tree.foot) << ", DBH "
                << 100 * tree.geometry.dbh << " cm) at " << where(block_.position)
                << ": move the release (release.x_m, release.y_*) or the stem, or lengthen block.launch_distance_m";
-            throw InputError(cfg_.sourceFile, 0, os.str());
+            throw ReleaseInsideStem(cfg_.sourceFile, 0, os.str());
         }
     }
 }

@@ -1,6 +1,7 @@
 // sylvarock: one executable, one subcommand per task (see Cli.hpp for how they register).
 #include <algorithm>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
 
 #include "Cli.hpp"
@@ -50,6 +51,12 @@ int main(int argc, char** argv) {
         } catch (const boost::program_options::error& e) {
             std::cerr << "sylvarock " << c.name << ": " << sylva::optionErrorMessage(e) << " (see sylvarock " << c.name
                       << " --help)\n";
+            return 2;
+        } catch (const std::filesystem::filesystem_error& e) {
+            // A folder or file the user named that cannot be made (--out under /proc, a read-only disk):
+            // their path and the system's reason, not the library's wording.
+            std::cerr << "sylvarock " << c.name << ": error: cannot create or write " << e.path1() << ": "
+                      << e.code().message() << "\n";
             return 2;
         } catch (const std::exception& e) {
             std::cerr << "sylvarock " << c.name << ": error: " << e.what() << "\n";

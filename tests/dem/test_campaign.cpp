@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "../CliRun.hpp"
 #include "DemTestScenes.hpp"
 #include "libcommon/CsvTable.hpp"
 #include "libcommon/InputError.hpp"
@@ -105,6 +106,20 @@ TEST(SimulateCli, WritesRunsSummaryAndTrajectories) {
     for (const char* key : {"\"dist50_m\"", "\"energy_line_deg\"", "\"runs\"", "\"wall_s\""})
         EXPECT_NE(summary.find(key), std::string::npos) << key;
     EXPECT_TRUE(std::filesystem::exists(out / "trajectories" / "run_0002.vtk"));
+}
+
+// An --out that cannot be made (a folder under a file; /proc on Linux) was "filesystem error: cannot
+// create directories", exit 1, as if the program had failed: it is the user's path, named, exit 2.
+TEST(SimulateCli, AnOutFolderThatCannotBeMadeIsNamed) {
+    const auto file = std::filesystem::temp_directory_path() / "sylvarock-tests" / "a-file";
+    std::filesystem::create_directories(file.parent_path());
+    std::ofstream(file) << "not a folder\n";
+    const std::string out = (file / "runs").string();
+    const sylva::testing::CliRun r = sylva::testing::runCli(std::string("simulate --scene ") + SYLVAROCK_DATA +
+                                                            "/scenes/no-forest.ini --runs 1 --no-figures --out " + out);
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("cannot create or write"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(file.string()), std::string::npos) << r.output;
 }
 
 // simulate wrote over any folder: a bare run into a forested run's folder left that run's

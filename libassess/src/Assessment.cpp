@@ -32,6 +32,17 @@ Inputs readInputs(const AssessmentOptions& options, const std::function<void(con
     if (options.bootstrapReplicates < 100)
         throw InputError("--bootstrap must be at least 100 replicates, got " + std::to_string(options.bootstrapReplicates));
     if (options.outDir.empty()) throw InputError("--out DIR is required");
+    // A PF50 from a handful of runs came with an interval of zero width ([0.740, 0.740] from one run),
+    // which reads as certainty: the bootstrap resamples only the runs there are.
+    constexpr long kFewRuns = 100;  // the paper's design: 100 runs per stand and structure
+    for (const dem::Model model : design.models) {
+        const long forested = static_cast<long>(runsPerRealisation(design, model)) * design.realisations;
+        const long bare = baselineRuns(design, model);
+        if (forested < kFewRuns || bare < kFewRuns)
+            note("warning: " + dem::toString(model) + ": each PF50 rests on " + std::to_string(forested) +
+                 " forested run(s) and " + std::to_string(bare) + " without forest: its interval shows only the spread of "
+                 "these few, not the sampling error (100 or more of each, as the paper's design)");
+    }
 
     dem::SceneConfig sceneConfig = dem::loadScene(design.sceneFile, design.sceneOverrides);
     if (!sceneConfig.forestFile.empty())

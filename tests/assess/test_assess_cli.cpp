@@ -60,6 +60,22 @@ TEST_F(AssessCli, AStandOfFewStemsIsWarnedOf) {
     EXPECT_EQ(err_.find("its inventory holds"), std::string::npos) << err_;
 }
 
+// One run gave "PF50 0.740 [0.740, 0.740]": an interval of zero width, read as certainty. Fewer than
+// the paper's 100 runs are warned of, model by model; 100 of each are not.
+TEST_F(AssessCli, APf50FromFewRunsIsWarnedOf) {
+    ASSERT_EQ(run(smallCampaign("few")), 0) << err_;
+    EXPECT_NE(err_.find("warning: dem: each PF50 rests on 4 forested run(s) and 6 without forest"), std::string::npos) << err_;
+    const auto lumped = [&](int baseline, const std::string& out) {
+        return "--stand " + std::string(SYLVAROCK_DATA) + "/stands/GR1 --scene " + std::string(SYLVAROCK_TEST_DATA) +
+               "/../assess/data/short-scene.ini --model lumped --realisations 2 --lumped-runs 50 --lumped-baseline-runs " +
+               std::to_string(baseline) + " --seed 9 --bootstrap 200 --out " + (root_ / out).string();
+    };
+    ASSERT_EQ(run(lumped(100, "enough")), 0) << err_;
+    EXPECT_EQ(err_.find("rests on"), std::string::npos) << err_;  // 2 forests x 50 runs
+    ASSERT_EQ(run(lumped(99, "bare-few")), 0) << err_;
+    EXPECT_NE(err_.find("warning: lumped: each PF50 rests on 100 forested run(s) and 99 without forest"), std::string::npos) << err_;
+}
+
 TEST_F(AssessCli, SmallCampaignWritesResultsAndReport) {
     ASSERT_EQ(run(smallCampaign("out")), 0) << err_;
     const std::string json = slurp(root_ / "out/results.json");

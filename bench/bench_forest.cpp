@@ -12,8 +12,11 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <numeric>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -53,13 +56,43 @@ Timing timeCampaign(const dem::Scene& scene, int runs, int threads, unsigned lon
     return t;
 }
 
+// A positional count: the whole argument a whole number >= `least`, or the bench stops naming it (a
+// scene key given in its place was read as 0 by atoi, and the bench ran 0 runs).
+unsigned long positional(const char* text, const char* name, unsigned long least) {
+    const std::string t = text;
+    std::size_t used = 0;
+    unsigned long v = 0;
+    try {
+        if (!t.empty() && t[0] != '-') v = std::stoul(t, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used == 0 || used != t.size() || v < least)
+        throw std::invalid_argument("the " + std::string(name) + " '" + t + "' is not a whole number >= " + std::to_string(least) +
+                                    " (bench_forest [runs] [threads] [seed] [section.key=value ...])");
+    return v;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    const int runs = argc > 1 ? std::atoi(argv[1]) : 100;
-    const int threads = argc > 2 ? std::atoi(argv[2]) : 2;
-    const unsigned long seed = argc > 3 ? std::strtoul(argv[3], nullptr, 10) : 9;
+    int runs = 100, threads = 2;
+    unsigned long seed = 9;
+    dem::SceneConfig config;
     const std::string data = SYLVAROCK_DATA_DIR;
+    // The positional counts end at the first scene key.
+    int keys = 1;
+    while (keys < std::min(argc, 4) && !std::strchr(argv[keys], '=')) ++keys;
+    const std::vector<std::string> overrides(argv + keys, argv + argc);
+    try {
+        if (keys > 1) runs = static_cast<int>(positional(argv[1], "run count", 1));
+        if (keys > 2) threads = static_cast<int>(positional(argv[2], "thread count", 1));
+        if (keys > 3) seed = positional(argv[3], "seed", 0);
+        config = dem::loadScene(data + "/scenes/no-forest.ini", overrides);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "bench_forest: %s\n", e.what());
+        return 2;
+    }
 
     const std::string stems = data + "/stands/MO1_stems.csv";
     const stand::StandCatalogue stand(stand::readInventory(stems, data + "/stands/MO1_plots.csv"), stems);
@@ -67,20 +100,17 @@ int main(int argc, char** argv) {
     g.seed = 3;
     auto forest = stand::generateForest(stand, stand::Window::rectangle(130, 0, 630, 200), g).forest;
     const std::size_t stemCount = forest.trees.size();
-
-    const std::vector<std::string> overrides(argv + std::min(argc, 4), argv + argc);
-    dem::SceneConfig config;
-    try {
-        config = dem::loadScene(data + "/scenes/no-forest.ini", overrides);
+    std::optional<dem::Scene> bare, forested;
+    try {  // a key may make the forest unbuildable (a tip diameter above its thinnest stems)
+        bare.emplace(config);
+        forested.emplace(config, std::move(forest));
     } catch (const std::exception& e) {
         std::fprintf(stderr, "bench_forest: %s\n", e.what());
         return 2;
     }
-    const dem::Scene bare(config);
-    const dem::Scene forested(config, std::move(forest));
 
-    const Timing without = timeCampaign(bare, runs, threads, seed);
-    const Timing with = timeCampaign(forested, runs, threads, seed);
+    const Timing without = timeCampaign(*bare, runs, threads, seed);
+    const Timing with = timeCampaign(*forested, runs, threads, seed);
     rusage ru{};
     getrusage(RUSAGE_SELF, &ru);
 

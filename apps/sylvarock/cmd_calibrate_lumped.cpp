@@ -34,10 +34,11 @@ std::vector<double> readRunouts(const std::string& path, const dem::Scene& scene
     // Along the surface, no path is longer than the bed's diagonal over the cosine of a 70 degree slope.
     const double longest = 3 * std::hypot(bed.xmax() - bed.xmin(), bed.ymax() - bed.ymin());
     std::set<std::string> reasons;
-    for (const auto r : {dem::StopReason::Rest, dem::StopReason::LeftDomain, dem::StopReason::TimeLimit, dem::StopReason::Failed})
-        reasons.insert(dem::toString(r));
     std::string listed;
-    for (const auto& r : reasons) listed += (listed.empty() ? "" : ", ") + r;
+    for (const auto r : dem::kStopReasons) {
+        reasons.insert(dem::toString(r));
+        listed += (listed.empty() ? "" : ", ") + dem::toString(r);
+    }
     std::map<long, long> seen;  // run -> line
     std::vector<double> out;
     for (std::size_t i = 0; i < t.rows(); ++i) {

@@ -41,7 +41,7 @@ bool parseInteger(const std::string& text, long long& out) {
 }
 
 bool knownReason(const std::string& r) {
-    for (auto reason : {dem::StopReason::Rest, dem::StopReason::LeftDomain, dem::StopReason::TimeLimit, dem::StopReason::Failed})
+    for (auto reason : dem::kStopReasons)
         if (r == dem::toString(reason)) return true;
     return false;
 }

@@ -1,5 +1,6 @@
 #pragma once
 // One block released on the slope and followed until it rests, leaves the domain or runs out of time.
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -19,6 +20,8 @@ class SurfacePath;
 // Failed: the run stopped on a SimulationError (its message in RunResult::failure); it has no
 // run-out and campaigns leave it out of their statistics.
 enum class StopReason { Rest, LeftDomain, TimeLimit, Failed };
+inline constexpr std::array<StopReason, 4> kStopReasons = {StopReason::Rest, StopReason::LeftDomain, StopReason::TimeLimit,
+                                                           StopReason::Failed};
 std::string toString(StopReason r);  // "rest", "left_domain", "time_limit", "failed"
 
 struct TrajectorySample {

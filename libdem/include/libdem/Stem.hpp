@@ -1,10 +1,11 @@
 #pragma once
 // A tree stem as a chain of rigid nodes from the foot up (paper Sect. 2.1.2, Fig. 2).
 // Geometry: a truncated cone through the DBH at 1.3 m, tapering linearly to StemParams::tipDiameter
-// at H_T, cut into equal connections of length l up to StemParams::nodeSpacing (a graded stem: so in
-// the struck zone, and up to StemParams::upperSpacingFactor times that above it). Each cone segment's mass goes half to each of its nodes; the
-// crown mass m_C is spread over the nodes within L_C of the top, each carrying the crown along the
-// connection below it (equally, on equal connections, as the paper spreads it). Between neighbouring nodes a connection of length l
+// at H_T, cut into equal connections of length l up to StemParams::nodeSpacing (a graded stem: equal
+// ones so in the struck zone, and equal ones up to StemParams::upperSpacingFactor times that above it).
+// Each cone segment's mass goes half to each of its nodes; the crown mass m_C is spread over the nodes
+// within L_C of the top, each carrying the crown along the connection below it (equally, on equal
+// connections, as the paper spreads it). Between neighbouring nodes a connection of length l
 // and mean diameter D_con carries linear elastic axial and twist springs (MOE and
 // G = MOE / (2 (1 + nu)); the axial one damped by wood's loss factor) and, for bending and shear, a ConnectionBeam (the trilinear law of Fig. 3
 // on its sections). The foot is clamped (coppice stems) or held

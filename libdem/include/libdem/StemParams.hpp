@@ -53,7 +53,7 @@ struct StemParams {
     RootSpringParams root;
     double density = 1200;       // fresh wood, kg/m^3
     double poisson = 0.3;        // nu: not in the paper; G = MOE / (2 (1 + nu))
-    double nodeSpacing = 0.5;    // m, longest connection: the stem (its struck zone, if graded) is cut into equal connections no longer
+    double nodeSpacing = 0.5;    // m, longest connection: the stem (its struck zone, if graded) is cut into equal connections no longer than this
     // Above the struck zone (the foot to `struckZone`, where blocks hit stems and hinges form) the stem
     // may be cut coarser, at most upperSpacingFactor x nodeSpacing apart: there it only swings, and its
     // nodes are most of a tall stem's. 1: the whole stem at nodeSpacing, as the paper's. Refining the

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -11,6 +12,8 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "Cli.hpp"
 #include "ProgressBar.hpp"
@@ -26,6 +29,15 @@ namespace {
 // (a run twice, from two campaigns' files joined; a stop reason simulate never writes; a run-out no
 // path on the scene's bed reaches) are refused with their line: each would move the fit silently.
 std::vector<double> readRunouts(const std::string& path, const dem::Scene& scene) {
+    // The lumped model's own runs.csv has the same columns: fitted on it, the roughness fitted itself.
+    const std::filesystem::path summary = std::filesystem::path(path).parent_path() / "summary.json";
+    if (std::ifstream in{summary}) {
+        const auto j = nlohmann::json::parse(in, nullptr, false);
+        const std::string dem = dem::toString(dem::Model::Dem);
+        if (!j.is_discarded() && j.is_object() && j.contains("model") && j["model"] != dem)
+            throw InputError(path, 0, "these are runs of the " + (j["model"].is_string() ? j["model"].get<std::string>() : j["model"].dump()) +
+                                          " model (" + summary.string() + "): calibrate on a DEM campaign's runs.csv (simulate --model dem)");
+    }
     const auto t = CsvTable::read(path);
     const std::size_t runout = t.require("runout_m"), reason = t.require("stop_reason"), run = t.require("run");
     // The lumped soil is calibrated on bare ground: run-outs shortened by trees would make it rougher.

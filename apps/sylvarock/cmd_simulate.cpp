@@ -185,7 +185,7 @@ int runSimulate(int argc, const char* const* argv) {
 
     const auto s = dem::summarise(results);
     dem::writeRunsCsv(out + "/runs.csv", results);
-    dem::writeSummaryJson(out + "/summary.json", s, wall, read->sceneFile);
+    dem::writeSummaryJson(out + "/summary.json", s, wall, read->sceneFile, dem::toString(c.model));
     if (scene.forested()) dem::writeImpactsCsv(out + "/impacts.csv", results);
     if (scene.config().launch.enabled) dem::writeImpactEnergyJson(out + "/energy.json", results.front());
     if (c.run.recordTrajectory) dem::writeTrajectories(out + "/trajectories", results);

@@ -163,9 +163,11 @@ void writeImpactEnergyJson(const std::string& path, const RunResult& r) {
     openOut(path) << j.dump(2) << "\n";
 }
 
-void writeSummaryJson(const std::string& path, const CampaignSummary& s, double wallSeconds, const std::string& scene) {
+void writeSummaryJson(const std::string& path, const CampaignSummary& s, double wallSeconds, const std::string& scene,
+                      const std::string& model) {
     Json j;
     j["scene"] = scene;
+    j["model"] = model;
     j["runs"] = s.runs;
     j["wall_s"] = wallSeconds;
     j["dist50_m"] = s.dist50;

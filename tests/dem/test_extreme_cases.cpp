@@ -545,7 +545,7 @@ TEST(ExtremeEnergyAudit, RunsAboveTheWarningLevelAreFlaggedInTheOutput) {
         }
         const std::string csv = (dir / "runs.csv").string(), json = (dir / "summary.json").string();
         writeRunsCsv(csv, runs);
-        writeSummaryJson(json, summarise(runs), 0, "flat");
+        writeSummaryJson(json, summarise(runs), 0, "flat", "dem");
         std::ifstream in(csv);
         std::string header, row;
         std::getline(in, header);

@@ -287,6 +287,18 @@ TEST(LumpedCalibration, RefusesRowsThatAreNotOneBareCampaigns) {
     }
 }
 
+// A lumped campaign's runs.csv has the DEM's columns: fitted on it, the roughness fitted itself (exit
+// 0). simulate's summary.json beside it names the model.
+TEST(LumpedCalibration, RefusesTheLumpedModelsOwnRuns) {
+    const auto dir = std::filesystem::temp_directory_path() / "sylvarock-calibrate-lumped-runs";
+    std::filesystem::remove_all(dir);
+    const std::string scene = std::string(SYLVAROCK_DATA) + "/scenes/no-forest.ini";
+    ASSERT_EQ(sylva::testing::runCli("simulate --scene " + scene + " --model lumped --runs 120 --no-figures --out " + dir.string()).status, 0);
+    const auto r = sylva::testing::runCli("calibrate-lumped --scene " + scene + " --dem " + (dir / "runs.csv").string());
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("these are runs of the lumped model"), std::string::npos) << r.output;
+}
+
 std::string writeText(const std::string& path, const std::string& text) {
     std::ofstream(path) << text;
     return path;

@@ -40,7 +40,9 @@ bool isRunsCsv(const std::string& path);
 void writeImpactEnergyJson(const std::string& path, const RunResult& run);
 // One row per block/tree impact of every run.
 void writeImpactsCsv(const std::string& path, const std::vector<RunResult>& runs);
-void writeSummaryJson(const std::string& path, const CampaignSummary& s, double wallSeconds, const std::string& scene);
+// `model`: "dem" or "lumped", which wrote the runs (calibrate-lumped reads it: it fits on the DEM's).
+void writeSummaryJson(const std::string& path, const CampaignSummary& s, double wallSeconds, const std::string& scene,
+                      const std::string& model);
 // One CSV per run (t,x,y,z,vx,vy,vz,wx,wy,wz,ek_translation_j,ek_rotation_j) and one legacy VTK
 // polyline per run (ParaView), in dir, named run_NNNN.csv and run_NNNN.vtk.
 void writeTrajectories(const std::string& dir, const std::vector<RunResult>& runs);

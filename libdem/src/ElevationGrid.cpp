@@ -110,8 +110,17 @@ private:
 }  // namespace
 
 ElevationGrid ElevationGrid::readAsc(const std::string& path) {
-    std::ifstream in(path);
+    std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path, 0, "cannot open file");
+    // A GeoTIFF (or any binary raster) read as text failed on its first bytes as a header key.
+    std::string start(4, ' ');
+    in.read(&start[0], 4);
+    start.resize(static_cast<std::size_t>(in.gcount()));
+    if (start.find('\0') != std::string::npos)  // TIFF's "II*\0" and "MM\0*", and most other binary formats
+        throw InputError(path, 0, "a binary file (a GeoTIFF?): terrain.dtm reads ESRI ASCII grids; convert it with "
+                                  "gdal_translate -of AAIGrid, or map on it with sylvarock hazard --dtm, which reads any raster GDAL does");
+    in.clear();
+    in.seekg(0);
     ElevationGrid g;
     g.source_ = path;
     AscHeader header(path);

@@ -111,6 +111,19 @@ TEST(ElevationGridReader, NonNumericValueNamesLineAndText) { expectError("grid_n
 
 TEST(ElevationGridReader, MissingFileIsAnInputError) { expectError("no_such_grid.asc", 0, "cannot open"); }
 
+// A GeoTIFF given as terrain.dtm was "unknown header key 'II*'" and raw bytes: it is named as binary,
+// with the conversion to make.
+TEST(ElevationGridReader, ABinaryRasterIsNamedWithTheWayToConvertIt) {
+    const std::string tif = std::string(SYLVAROCK_DATA) + "/hazard/slope.tif";
+    try {
+        ElevationGrid::readAsc(tif);
+        ADD_FAILURE() << "a GeoTIFF was read";
+    } catch (const InputError& e) {
+        EXPECT_TRUE(contains(e.what(), "a binary file (a GeoTIFF?)")) << e.what();
+        EXPECT_TRUE(contains(e.what(), "gdal_translate -of AAIGrid")) << e.what();
+    }
+}
+
 // GDAL's float32 NODATA marker in a file that does not declare it: a wall 3.4e38 m deep, refused
 // where it stands rather than run (run-outs of 1e38 m), and likewise from a grid GDAL read.
 TEST(ElevationGridReader, AHeightBeyondEarthsReliefIsAnUndeclaredNodata) {

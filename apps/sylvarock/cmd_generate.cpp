@@ -51,7 +51,6 @@ stand::Window parseExtent(const std::string& text) {
 // forest: does the generator keep the stand's aggregation (A) or remove it (NA)?
 void drawForestFigures(const std::string& dir, const stand::Inventory& inventory, const stand::Window& extent,
                        const std::vector<stand::Forest>& forests, const std::string& structure) {
-    requirePlotDir(dir);
     const std::vector<stand::PlotPoints> plots = stand::plotPoints(inventory);
     const double rmax = stand::defaultPairCorrelationRmax(plots);
     const std::size_t nr = 257;
@@ -118,6 +117,10 @@ int runGenerate(int argc, const char* const* argv) {
         throw InputError("--seed " + std::to_string(seed) + " with --realisations " + std::to_string(count) +
                          ": the forests' seeds (seed, seed + 1, ...) must stay within 0 to 4294967295, the 32 bits GSL's "
                          "Mersenne twister keeps");
+
+    // Before any forest is written: a folder that cannot be made would stop the command after its
+    // forests, leaving them as if it had succeeded.
+    if (vm.count("plot-dir")) requirePlotDir(vm["plot-dir"].as<std::string>());
 
     const std::string stemsPath = vm["stems"].as<std::string>();
     const stand::Inventory inventory = stand::readInventory(stemsPath, vm["plots"].as<std::string>());

@@ -46,27 +46,30 @@ std::shared_ptr<const SoilBed> bedOnGrid(const TerrainConfig& t, const Elevation
     micro.seed = t.soil.seed;
     return std::make_shared<SoilBed>(SoilBed::fromGrid(withMicroTopography(dtm, micro), t.soil));
 }
-std::shared_ptr<const SoilBed> buildSoil(const TerrainConfig& t) {
+std::shared_ptr<const SoilBed> buildSoil(const SceneConfig& c) {
+    const TerrainConfig& t = c.terrain;
     if (t.profile.empty() == t.dtm.empty())
-        throw InputError("the scene needs exactly one of terrain.profile or terrain.dtm");
+        throw InputError(c.sourceFile, 0, t.profile.empty() ? "the scene names no terrain: give terrain.profile (a slope profile CSV) or terrain.dtm (a DTM)"
+                                                            : "the scene names two terrains (terrain.profile and terrain.dtm): give one");
     if (!t.profile.empty()) {
         if (t.micro.sigma > 0)
-            throw InputError("terrain.microtopography_m is added to DTMs; a profile carries its own (data/slopes/make_standin.py --sigma)");
+            throw InputError(c.sourceFile, 0, "terrain.microtopography_m is added to DTMs; a profile carries its own (data/slopes/make_standin.py --sigma)");
         return std::make_shared<SoilBed>(SoilBed::fromProfile(SlopeProfile::readCsv(t.profile), t.soil));
     }
     return bedOnGrid(t, ElevationGrid::readAsc(t.dtm));
 }
-std::shared_ptr<const SoilBed> soilOn(const TerrainConfig& t, const ElevationGrid& dtm) {
+std::shared_ptr<const SoilBed> soilOn(const SceneConfig& c, const ElevationGrid& dtm) {
+    const TerrainConfig& t = c.terrain;
     if (!t.profile.empty() || !t.dtm.empty())
-        throw InputError("the scene names a terrain (" + (t.profile.empty() ? t.dtm : t.profile) + ") and another DTM is given: give one terrain");
+        throw InputError(c.sourceFile, 0, "the scene names a terrain (" + (t.profile.empty() ? t.dtm : t.profile) + ") and another DTM is given: give one terrain");
     return bedOnGrid(t, dtm);
 }
 }  // namespace
 
-Scene::Scene(SceneConfig config, stand::Forest forest) : Scene(config, buildSoil(config.terrain), std::move(forest)) {}
+Scene::Scene(SceneConfig config, stand::Forest forest) : Scene(config, buildSoil(config), std::move(forest)) {}
 
 Scene::Scene(SceneConfig config, const ElevationGrid& dtm, stand::Forest forest)
-    : Scene(config, soilOn(config.terrain, dtm), std::move(forest)) {}
+    : Scene(config, soilOn(config, dtm), std::move(forest)) {}
 
 Scene::Scene(SceneConfig config, std::shared_ptr<const SoilBed> soil, stand::Forest forest)
     : config_(std::move(config)),

@@ -4,7 +4,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <tuple>
 
+#include "libdem/Scene.hpp"
 #include "libdem/SceneConfig.hpp"
 #include "libcommon/InputError.hpp"
 
@@ -308,4 +310,21 @@ TEST(SceneConfigParser, EveryRefusalNamesWhereItsKeyWasGiven) {
     EXPECT_NE(fileRefusal(slab, {"block.d1_m=20", "block.d3_m=1"}).find("longest edge is 20 times"), std::string::npos);
     const std::string shape = writeScene("shape.ini", "# a block\n[block]\nshape = pyramid\n");
     EXPECT_NE(fileRefusal(shape).find("shape.ini:3: block.shape"), std::string::npos) << fileRefusal(shape);
+}
+
+// An empty scene file (or one with only [block]) is read as Table 2's defaults, which name no
+// terrain: the refusal must say which file lacks it, as every other scene refusal does.
+TEST(SceneConfigParser, ASceneWithoutATerrainOrWithTwoNamesItsFile) {
+    for (const auto& [name, text, says] :
+         {std::tuple<const char*, const char*, const char*>{"empty.ini", "", "names no terrain"},
+          {"two.ini", "[terrain]\nprofile = a.csv\ndtm = b.asc\n", "two terrains"}}) {
+        const std::string path = writeScene(name, text);
+        try {
+            Scene scene(loadScene(path));
+            ADD_FAILURE() << name << ": accepted";
+        } catch (const sylva::InputError& e) {
+            EXPECT_EQ(e.file(), path) << e.what();
+            EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+        }
+    }
 }

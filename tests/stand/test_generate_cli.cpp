@@ -98,6 +98,19 @@ TEST(GenerateCli, BadOptionsExitWithStatusTwoAndSayWhy) {
     EXPECT_FALSE(std::filesystem::exists(tiny));
 }
 
+// A --plot-dir that cannot be made is refused before any forest is written: found after them, it
+// left the forests behind a failed command (exit 2), to be taken for its output.
+TEST(GenerateCli, AnUnmakeablePlotDirIsRefusedBeforeAnyForestIsWritten) {
+    const std::string dir = ::testing::TempDir() + "/generate_cli_plot_dir/";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir + "a_file") << "not a folder\n";
+    const CliRun r = generate("--structure random --extent 0,0,60,40 --seed 5 --out " + dir + "F.csv --plot-dir " + dir + "a_file/fig");
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("--plot-dir"), std::string::npos) << r.output;
+    EXPECT_FALSE(exists(dir + "F.csv"));
+}
+
 // Figures for people (issue 13): the virtual forests' g(r) against the inventory's and its CSR
 // envelope, and a map; the numbers are written with or without gnuplot. The folder's name has an
 // apostrophe and a space, which once ended gnuplot's quoted paths early and lost every figure.

@@ -3,6 +3,9 @@
 #include <atomic>
 #include <exception>
 #include <mutex>
+#include <string>
+
+#include <unistd.h>
 
 #include "libdem/LumpedRun.hpp"
 #include "libdem/SimulationError.hpp"
@@ -31,7 +34,27 @@ Model parseModel(const std::string& name) {
 
 std::string toString(Model m) { return m == Model::Dem ? "dem" : "lumped"; }
 
+namespace {
+
+// A campaign keeps every run's record until it is written: runs beyond the machine's memory would
+// fail in the allocator, or in the kernel's out-of-memory killer, after the index alone had taken
+// gigabytes. Half the physical memory leaves room for what the records hold besides themselves.
+void requireMemoryFor(long runs) {
+    const long pages = sysconf(_SC_PHYS_PAGES), pageBytes = sysconf(_SC_PAGE_SIZE);
+    if (pages <= 0 || pageBytes <= 0) return;  // not known here: the allocator will say
+    const double physical = static_cast<double>(pages) * static_cast<double>(pageBytes);
+    const double needed = static_cast<double>(runs) * static_cast<double>(sizeof(RunResult) + sizeof(int));
+    if (needed <= 0.5 * physical) return;
+    const auto gb = [](double bytes) { return readableNumber(static_cast<double>(static_cast<long>(bytes / 1e8)) / 10); };
+    throw InputError(std::to_string(runs) + " runs: a campaign keeps every run's record in memory until it writes "
+                     "them, at least " + gb(needed) + " GB here, more than half of this machine's " + gb(physical) +
+                     " GB: split it into campaigns of fewer runs (each with its own --seed)");
+}
+
+}  // namespace
+
 std::vector<RunResult> runCampaign(const Scene& scene, const CampaignOptions& options) {
+    requireMemoryFor(options.only.empty() ? options.runs : static_cast<long>(options.only.size()));
     std::vector<int> indices = options.only;
     if (indices.empty())
         for (int i = 0; i < options.runs; ++i) indices.push_back(i);

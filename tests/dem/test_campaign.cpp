@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -20,6 +21,23 @@
 #include "libdem/CampaignSummary.hpp"
 
 using namespace sylva::dem;
+
+// --runs 2000000000 took 8 GB for the runs' index and then died in the allocator (std::bad_alloc,
+// exit 1, or the kernel's killer on a smaller machine): refused before anything is held, with what
+// it would take. 2^31 - 1 records of more than a hundred bytes exceed half of any machine this runs on.
+TEST(Campaign, RunsBeyondTheMachinesMemoryAreRefusedUpFront) {
+    const Scene scene(sylva::dem::testing::straightSlopeScene(30, 120, 40, {"release.x_m=10", "release.y_m=20"}));
+    static_assert(sizeof(RunResult) > 100, "the record is larger than this test assumes");
+    CampaignOptions o;
+    o.runs = std::numeric_limits<int>::max();
+    try {
+        runCampaign(scene, o);
+        ADD_FAILURE() << "accepted";
+    } catch (const sylva::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("2147483647 runs"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("GB"), std::string::npos) << e.what();
+    }
+}
 
 TEST(Campaign, ResultsDoNotDependOnTheNumberOfThreads) {
     const Scene scene(sylva::dem::testing::straightSlopeScene(30, 120, 40, {"release.x_m=10", "release.y_m=20", "stop.max_time_s=6"}));

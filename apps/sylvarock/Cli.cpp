@@ -25,6 +25,31 @@ std::vector<Command>& table() {
 
 const std::vector<Command>& commands() { return table(); }
 
+namespace {
+// Boost names the option a config file got wrong but not its line: each line is read again on its
+// own (under its section) until one is refused. 0 when none is alone (a key given twice).
+long refusedLine(const std::string& text, const po::options_description& options) {
+    std::istringstream in(text);
+    std::string line, section;
+    for (long n = 1; std::getline(in, line); ++n) {
+        const auto first = line.find_first_not_of(" \t\r");
+        if (first == std::string::npos || line[first] == '#') continue;
+        if (line[first] == '[') {
+            section = line;
+            continue;
+        }
+        std::istringstream alone(section + "\n" + line + "\n");
+        po::variables_map scratch;
+        try {
+            po::store(po::parse_config_file(alone, options), scratch);
+        } catch (const po::error&) {
+            return n;
+        }
+    }
+    return 0;
+}
+}  // namespace
+
 CommandRegistration::CommandRegistration(Command c) {
     auto& t = table();
     const auto after = std::upper_bound(t.begin(), t.end(), c.place, [](int place, const Command& d) { return place < d.place; });
@@ -63,12 +88,15 @@ bool parse(int argc, const char* const* argv, const po::options_description& opt
     if (vm.count("config")) {
         const std::string path = vm["config"].as<std::string>();
         if (std::filesystem::is_directory(path)) throw InputError(path, 0, "is a folder, not a config file");
-        std::ifstream in(path);
-        if (!in) throw InputError(path, 0, "cannot open config file");
+        std::ifstream file(path);
+        if (!file) throw InputError(path, 0, "cannot open config file");
+        std::stringstream text;
+        text << file.rdbuf();
+        std::istringstream in(text.str());
         try {
             po::store(po::parse_config_file(in, options), vm);
         } catch (const po::error& e) {
-            throw InputError(path, 0, optionErrorMessage(e));
+            throw InputError(path, refusedLine(text.str(), options), optionErrorMessage(e));
         }
     }
     po::notify(vm);

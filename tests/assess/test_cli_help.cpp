@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
+#include <utility>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -57,4 +59,19 @@ TEST(CliHelp, AStrayWordIsRefusedByEveryCommand) {
     const auto two = runCli("assess --stand data/stands/GR1 data/stands/MO1 --out x");
     EXPECT_EQ(two.status, 2) << two.output;
     EXPECT_NE(two.output.find("repeat the option (--stand data/stands/GR1 --stand data/stands/MO1)"), std::string::npos) << two.output;
+}
+
+// --config (options from a file, as on the command line): a refused value or key names the file and
+// its line, as a scene file's refusals do; it named the file alone.
+TEST(CliHelp, AConfigFileRefusalNamesItsLine) {
+    const std::string path = ::testing::TempDir() + "cli_config_refusal.ini";
+    for (const auto& [text, line] : {std::pair<const char*, const char*>{"# a campaign\nruns = 5\n\nseed = x\n", ":4:"},
+                                     {"runs = 5\nthreads = two\n", ":2:"},
+                                     {"runs = 5\n\nrun = 6\n", ":3:"}}) {
+        std::ofstream(path) << text;
+        const auto r = runCli("simulate --scene data/scenes/no-forest.ini --config " + path + " --out " +
+                              ::testing::TempDir() + "cli_config_refusal");
+        EXPECT_EQ(r.status, 2) << r.output;
+        EXPECT_NE(r.output.find(path + line), std::string::npos) << text << "\n" << r.output;
+    }
 }

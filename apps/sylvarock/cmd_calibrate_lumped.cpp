@@ -92,7 +92,12 @@ void rewriteLumpedSection(const std::string& path, const std::string& comment,
     std::string line;
     bool inLumped = false, beforeSections = true;
     const auto fitted = [&](const std::string& key) { return std::any_of(keys.begin(), keys.end(), [&](const auto& k) { return k.first == key; }); };
-    while (std::getline(in, line)) {
+    bool crlf = false;  // a file written on Windows keeps its line ends: mixed ones confuse editors and diffs
+    for (bool first = true; std::getline(in, line); first = false) {
+        if (!line.empty() && line.back() == '\r') {
+            crlf = crlf || first;
+            line.pop_back();
+        }
         const std::string t = trimmed(line);
         const auto eq = t.find('=');
         const std::string key = eq == std::string::npos ? std::string() : trimmed(t.substr(0, eq));
@@ -114,10 +119,15 @@ void rewriteLumpedSection(const std::string& path, const std::string& comment,
     std::string text = kept.str();
     while (text.size() > 1 && text[text.size() - 1] == '\n' && text[text.size() - 2] == '\n') text.pop_back();
     while (!others.empty() && trimmed(others.back()).empty()) others.pop_back();
-    std::ofstream out(path + ".tmp");
-    out << text << '\n' << "[lumped]\n" << comment;
-    for (const std::string& l : others) out << l << '\n';
-    for (const auto& [key, value] : keys) out << key << " = " << value << '\n';
+    std::ostringstream section;
+    section << text << '\n' << "[lumped]\n" << comment;
+    for (const std::string& l : others) section << l << '\n';
+    for (const auto& [key, value] : keys) section << key << " = " << value << '\n';
+    std::ofstream out(path + ".tmp", std::ios::binary);
+    for (const char c : section.str()) {
+        if (c == '\n' && crlf) out << '\r';
+        out << c;
+    }
     out.close();
     if (!out || std::rename((path + ".tmp").c_str(), path.c_str()) != 0)
         throw InputError(path, 0, "could not rewrite the scene file");

@@ -306,44 +306,54 @@ std::string writeText(const std::string& path, const std::string& text) {
 
 // --write sets the fit's keys and keeps the section's others: the fit was made with them, and the
 // scene must give the fitted Dist50 again (they used to be dropped: Dist50 346 m instead of 338.5 m).
-TEST(LumpedCalibration, WriteKeepsTheSectionsOtherKeys) {
-    const auto dir = std::filesystem::temp_directory_path() / "sylvarock-calibrate-write";
-    std::filesystem::create_directories(dir);
-    const std::string runs = (dir / "runs.csv").string(), scene = (dir / "scene.ini").string();
-    std::ofstream out(runs);
-    out << "run,runout_m,stop_reason,tree_impacts\n";
-    for (int i = 0; i < 120; ++i) out << i << "," << 330 + 0.1 * i << ",rest,0\n";
-    out.close();
-    std::ifstream in(kNoForest);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const std::string relative = "../slopes/";  // the scene's profile, relative to data/scenes
-    text.replace(text.find(relative), relative.size(), std::string(SYLVAROCK_DATA) + "/slopes/");
-    text += "deviation_sd_deg = 8\ntree_reach = centre\n# a note of the user's\n";
-    // A fitted key given before any section, with its section's name (and not in the section): replaced
-    // too, or the scene would set it twice once the section does, and no longer load.
-    const std::string inSection = "\nrg70_m = ";
-    const auto at = text.find(inSection);
-    ASSERT_NE(at, std::string::npos);
-    text.erase(at + 1, text.find('\n', at + 1) - at);
-    text = "lumped.rg70_m = 0.05\n" + text;
-    ASSERT_NO_THROW(loadScene(writeText(scene, text)));
-    const auto r = sylva::testing::runCli("calibrate-lumped --scene " + scene + " --dem " + runs + " --runs 200 --write");
-    ASSERT_EQ(r.status, 0) << r.output;
-    std::ifstream written(scene);
-    const std::string after((std::istreambuf_iterator<char>(written)), std::istreambuf_iterator<char>());
-    for (const char* kept : {"deviation_sd_deg = 8", "tree_reach = centre", "# a note of the user's", "[terrain]"})
-        EXPECT_NE(after.find(kept), std::string::npos) << kept << " lost:\n" << after;
-    const auto count = [&](const std::string& s) {
-        std::size_t n = 0;
-        for (auto at = after.find(s); at != std::string::npos; at = after.find(s, at + 1)) ++n;
-        return n;
-    };
-    EXPECT_EQ(count("[lumped]"), 1u) << after;
-    EXPECT_EQ(count("rg70_m ="), 1u) << after;
-    EXPECT_EQ(count("soil_type ="), 1u) << after;
-    EXPECT_EQ(count("# calibrated with:"), 1u) << after;
-    const SceneConfig c = loadScene(scene);
-    EXPECT_EQ(c.lumped.treeReach, TreeReach::Centre);
-    EXPECT_DOUBLE_EQ(c.lumped.deviationSdDeg, 8);
+// A scene written on Windows keeps its CRLF line ends (the section was appended with LF ones).
+TEST(LumpedCalibration, WriteKeepsTheSectionsOtherKeysAndTheFilesLineEnds) {
+    for (const bool crlf : {false, true}) {
+        SCOPED_TRACE(crlf ? "CRLF" : "LF");
+        const auto dir = std::filesystem::temp_directory_path() / "sylvarock-calibrate-write";
+        std::filesystem::create_directories(dir);
+        const std::string runs = (dir / "runs.csv").string(), scene = (dir / "scene.ini").string();
+        std::ofstream out(runs);
+        out << "run,runout_m,stop_reason,tree_impacts\n";
+        for (int i = 0; i < 120; ++i) out << i << "," << 330 + 0.1 * i << ",rest,0\n";
+        out.close();
+        std::ifstream in(kNoForest);
+        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        const std::string relative = "../slopes/";  // the scene's profile, relative to data/scenes
+        text.replace(text.find(relative), relative.size(), std::string(SYLVAROCK_DATA) + "/slopes/");
+        text += "deviation_sd_deg = 8\ntree_reach = centre\n# a note of the user's\n";
+        // A fitted key given before any section, with its section's name (and not in the section): replaced
+        // too, or the scene would set it twice once the section does, and no longer load.
+        const std::string inSection = "\nrg70_m = ";
+        const auto at = text.find(inSection);
+        ASSERT_NE(at, std::string::npos);
+        text.erase(at + 1, text.find('\n', at + 1) - at);
+        text = "lumped.rg70_m = 0.05\n" + text;
+        if (crlf)
+            for (auto at = text.find('\n'); at != std::string::npos; at = text.find('\n', at + 2)) text.insert(at, "\r");
+        ASSERT_NO_THROW(loadScene(writeText(scene, text)));
+        const auto r = sylva::testing::runCli("calibrate-lumped --scene " + scene + " --dem " + runs + " --runs 200 --write");
+        ASSERT_EQ(r.status, 0) << r.output;
+        std::ifstream written(scene);
+        const std::string after((std::istreambuf_iterator<char>(written)), std::istreambuf_iterator<char>());
+        for (const char* kept : {"deviation_sd_deg = 8", "tree_reach = centre", "# a note of the user's", "[terrain]"})
+            EXPECT_NE(after.find(kept), std::string::npos) << kept << " lost:\n" << after;
+        const auto count = [&](const std::string& s) {
+            std::size_t n = 0;
+            for (auto at = after.find(s); at != std::string::npos; at = after.find(s, at + 1)) ++n;
+            return n;
+        };
+        EXPECT_EQ(count("[lumped]"), 1u) << after;
+        EXPECT_EQ(count("rg70_m ="), 1u) << after;
+        EXPECT_EQ(count("soil_type ="), 1u) << after;
+        EXPECT_EQ(count("# calibrated with:"), 1u) << after;
+        const SceneConfig c = loadScene(scene);
+        EXPECT_EQ(c.lumped.treeReach, TreeReach::Centre);
+        EXPECT_DOUBLE_EQ(c.lumped.deviationSdDeg, 8);
+        std::size_t lineEnds = 0, crlfEnds = 0;
+        for (std::size_t i = 0; i < after.size(); ++i)
+            if (after[i] == '\n') ++lineEnds, crlfEnds += i > 0 && after[i - 1] == '\r';
+        EXPECT_EQ(crlfEnds, crlf ? lineEnds : 0u) << after;
+    }
 }
 

@@ -74,7 +74,9 @@ stand::Window windowOf(const OGRPolygon& polygon, const std::string& path, const
 }
 
 // Stems of different polygons may come closer than their radii where the polygons share a border:
-// the later one is dropped (a tree stands in one stand).
+// the later one is dropped (a tree stands in one stand). A polygon's own stems are not held to it:
+// the generator spaces them, but a coppice stool's stems may stand closer than their radii, as
+// inventories record them, and were dropped as if a neighbour's (a third of such a stand).
 class StemOccupancy {
 public:
     bool overlaps(const stand::Tree& t) const {
@@ -183,6 +185,7 @@ StandForest readStandPolygons(const std::string& path, const Dtm& dtm, std::uint
                 s.areaHa += window.area() / 1e4;
                 long dropped = 0;
                 const long stoolBase = stool;
+                const std::size_t first = out.forest.trees.size();
                 for (stand::Tree t : g.forest.trees) {
                     if (occupied.overlaps(t)) {
                         ++dropped;
@@ -193,10 +196,10 @@ StandForest readStandPolygons(const std::string& path, const Dtm& dtm, std::uint
                         t.stool = *t.stool + stoolBase;
                         stool = std::max(stool, *t.stool);
                     }
-                    occupied.add(t);
                     out.forest.trees.push_back(t);
                     ++s.stems;
                 }
+                for (std::size_t i = first; i < out.forest.trees.size(); ++i) occupied.add(out.forest.trees[i]);
                 if (dropped)
                     out.notes.push_back(where + ": " + std::to_string(dropped) + " stem(s) dropped where they would overlap a neighbouring stand's");
             }

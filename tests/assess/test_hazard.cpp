@@ -892,6 +892,43 @@ TEST_F(StandPolygons, EachPolygonHoldsItsStandsForest) {
     EXPECT_NE(other.forest.trees.front().x, f.forest.trees.front().x);
 }
 
+// A stool's stems may stand closer than their radii (coppice stems recorded 0.15 m apart at 20 cm
+// DBH): a polygon keeps all of its own stems, where they were dropped as a neighbouring stand's (a
+// third of this stand), and still drops a neighbour's that would overlap them.
+TEST_F(StandPolygons, AStandKeepsItsOwnStoolsStemsStandingCloserThanTheirRadii) {
+    const Dtm d = readDtm(flat());
+    std::string stems = "plot,stem,x,y,dbh_cm,species,stool\n";
+    for (int k = 0; k < 15; ++k) {
+        const double x = 1.5 + 1.2 * k, y = 2.0 + 1.1 * k;
+        stems += "1," + std::to_string(2 * k + 1) + "," + std::to_string(x) + "," + std::to_string(y) + ",20,beech," + std::to_string(k + 1) + "\n";
+        stems += "1," + std::to_string(2 * k + 2) + "," + std::to_string(x + 0.15) + "," + std::to_string(y) + ",20,beech," + std::to_string(k + 1) + "\n";
+        stems += "1," + std::to_string(31 + k) + "," + std::to_string(18.5 - 1.2 * k) + "," + std::to_string(2.0 + 1.1 * k) + ",20,beech,\n";
+    }
+    write("COPPICE_stems.csv", stems);
+    write("COPPICE_plots.csv", "plot,xmin,ymin,xmax,ymax\n1,0,0,20,20\n");
+    const std::string coppice = (dir_ / "COPPICE").string();
+    const StandForest f = readStandPolygons(
+        stands({{"{\"stand\": \"" + coppice + "\", \"structure\": \"A\"}", {{{10, 10}, {150, 10}, {150, 190}, {10, 190}, {10, 10}}}},
+                {"{\"stand\": \"" + coppice + "\", \"structure\": \"A\"}", {{{150, 10}, {290, 10}, {290, 190}, {150, 190}, {150, 10}}}}}),
+        d, 3, kTip);
+    ASSERT_EQ(f.polygons.size(), 2u);
+    EXPECT_EQ(f.polygons[0].stems, std::lround(stemsPerHa(coppice) * f.polygons[0].areaHa));
+    long close = 0;  // a stool's stems closer than their radii, kept
+    for (std::size_t i = 1; i < f.forest.trees.size(); ++i) {
+        const auto &a = f.forest.trees[i - 1], &b = f.forest.trees[i];
+        close += a.stool && a.stool == b.stool && std::hypot(a.x - b.x, a.y - b.y) < 0.2;
+    }
+    EXPECT_GT(close, f.polygons[0].stems / 5);
+    // The second stand loses at most its stems at the shared border, never its own stools' stems.
+    EXPECT_LE(f.polygons[1].stems, std::lround(stemsPerHa(coppice) * f.polygons[1].areaHa));
+    EXPECT_GE(f.polygons[1].stems, std::lround(stemsPerHa(coppice) * f.polygons[1].areaHa) - 10);
+    for (const auto& a : f.forest.trees)
+        for (const auto& b : f.forest.trees)
+            if (a.id < b.id && (a.id <= f.polygons[0].stems) != (b.id <= f.polygons[0].stems)) {
+                ASSERT_GE(std::hypot(a.x - b.x, a.y - b.y), (a.dbhCm + b.dbhCm) / 200) << "stems " << a.id << " and " << b.id;
+            }
+}
+
 // A polygon reaching past the DTM is cut to the terrain (the rectangle of cell centres); the
 // inventory is found beside the vector file; no `structure` means A, said in the notes.
 TEST_F(StandPolygons, PolygonsAreCutToTheTerrainAndInventoriesFoundBesideTheFile) {

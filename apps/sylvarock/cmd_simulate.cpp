@@ -225,6 +225,12 @@ int runSimulate(int argc, const char* const* argv) {
         std::cerr << "sylvarock simulate: warning: " << left->second << " of " << s.runs - s.failedRuns
                   << " runs left the terrain; their run-outs are where they left it, lower bounds"
                   << (2 * left->second >= s.runs - s.failedRuns ? ", and so is Dist50 (a longer slope would tell)" : "") << "\n";
+    // So is a run cut by the time limit while the block still moved.
+    if (const auto timed = s.stopReasons.find(dem::toString(dem::StopReason::TimeLimit)); timed != s.stopReasons.end() && timed->second > 0)
+        std::cerr << "sylvarock simulate: warning: " << timed->second << " of " << s.runs - s.failedRuns
+                  << " runs reached stop.max_time_s (" << readableNumber(scene.config().stop.maxTime)
+                  << " s) still moving; their run-outs are where the time ran out, lower bounds"
+                  << (2 * timed->second >= s.runs - s.failedRuns ? ", and so is Dist50" : "") << ": raise stop.max_time_s\n";
     if (s.failedRuns > 0) {
         std::cerr << "sylvarock simulate: " << s.failedRuns << " of " << s.runs
                   << " runs stopped on a numerical error and are left out of the statistics (stop_reason failed in "

@@ -7,6 +7,7 @@
 #include "libassess/CampaignRunner.hpp"
 #include "libassess/CampaignStore.hpp"
 #include "libassess/MpiWorld.hpp"
+#include "libdem/BlockRun.hpp"
 #include "libdem/SceneConfig.hpp"
 #include "libdem/TreeField.hpp"
 #include "libcommon/InputError.hpp"
@@ -68,6 +69,32 @@ Inputs readInputs(const AssessmentOptions& options, const std::function<void(con
     return in;
 }
 
+// A block stopped by stop.max_time_s or at the terrain's end would have gone further: its run-out is
+// a lower bound, and so are the Dist50 and PF50 built on such runs. simulate says so; assess did not,
+// and gave a PF50 of -0.100 from runs that had all hit the time limit.
+void noteUnfinishedRuns(const AssessmentDesign& design, const std::vector<Campaign>& plan, const CampaignStore& store,
+                        const std::function<void(const std::string&)>& note) {
+    const std::string timeLimit = dem::toString(dem::StopReason::TimeLimit), leftDomain = dem::toString(dem::StopReason::LeftDomain);
+    for (const dem::Model model : design.models) {
+        long timed = 0, left = 0, finished = 0;
+        for (std::size_t c = 0; c < plan.size(); ++c) {
+            if (plan[c].model != model) continue;
+            for (const auto& [run, r] : store.runs(c)) {
+                timed += r.reason == timeLimit;
+                left += r.reason == leftDomain;
+                finished += r.reason != dem::toString(dem::StopReason::Failed);
+            }
+        }
+        if (timed + left == 0) continue;
+        std::string which;
+        if (timed) which = std::to_string(timed) + " reached the time limit still moving (stop.max_time_s)";
+        if (left) which += (timed ? " and " : "") + std::to_string(left) + " left the terrain";
+        note("warning: " + dem::toString(model) + ": of " + std::to_string(finished) + " runs, " + which +
+             ": their run-outs are where they were cut, lower bounds, and the Dist50 and PF50 that count them are too "
+             "(stop_reasons in results.json, each run's in report/runs.csv; a longer time limit or slope would tell)");
+    }
+}
+
 }  // namespace
 
 std::vector<AssessmentResults> runAssessment(const AssessmentOptions& options) {
@@ -100,6 +127,7 @@ std::vector<AssessmentResults> runAssessment(const AssessmentOptions& options) {
     const std::size_t notesBefore = store.notes().size();
     runMissing(plan, store, in.bareScene, in.catalogues, runner);
     for (std::size_t n = notesBefore; n < store.notes().size(); ++n) note(store.notes()[n]);
+    noteUnfinishedRuns(options.design, plan, store, note);
 
     BootstrapSettings bootstrap;
     bootstrap.replicates = options.bootstrapReplicates;

@@ -76,6 +76,16 @@ TEST_F(AssessCli, APf50FromFewRunsIsWarnedOf) {
     EXPECT_NE(err_.find("warning: lumped: each PF50 rests on 100 forested run(s) and 99 without forest"), std::string::npos) << err_;
 }
 
+// Runs cut by the time limit are lower bounds, and the PF50 built on them too: assess said nothing
+// and gave a PF50 of -0.100 from runs that had all hit it. A campaign whose runs all came to rest
+// says nothing of it.
+TEST_F(AssessCli, RunsCutByTheTimeLimitAreWarnedOf) {
+    ASSERT_EQ(run(smallCampaign("cut") + " --set stop.max_time_s=2"), 0) << err_;
+    EXPECT_NE(err_.find("warning: dem: of 14 runs, 14 reached the time limit still moving"), std::string::npos) << err_;
+    ASSERT_EQ(run(smallCampaign("whole")), 0) << err_;
+    EXPECT_EQ(err_.find("reached the time limit"), std::string::npos) << err_;
+}
+
 TEST_F(AssessCli, SmallCampaignWritesResultsAndReport) {
     ASSERT_EQ(run(smallCampaign("out")), 0) << err_;
     const std::string json = slurp(root_ / "out/results.json");

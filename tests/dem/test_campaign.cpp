@@ -128,6 +128,20 @@ TEST(SimulateCli, WritesRunsSummaryAndTrajectories) {
 
 // An --out that cannot be made (a folder under a file; /proc on Linux) was "filesystem error: cannot
 // create directories", exit 1, as if the program had failed: it is the user's path, named, exit 2.
+// A run cut by stop.max_time_s while the block still moved has a run-out that is a lower bound, as
+// one that left the terrain has: said, where it went by as an ordinary result (Dist50 89.1 m).
+TEST(SimulateCli, RunsCutByTheTimeLimitAreWarnedOf) {
+    const std::string base = std::string("simulate --scene ") + SYLVAROCK_DATA + "/scenes/no-forest.ini --runs 2 --seed 2 --threads 2 --no-figures --out " +
+                             (std::filesystem::temp_directory_path() / "sylvarock-simulate-time-limit").string();
+    const auto cut = sylva::testing::runCli(base + " --set stop.max_time_s=3");
+    ASSERT_EQ(cut.status, 0) << cut.output;
+    EXPECT_NE(cut.output.find("warning: 2 of 2 runs reached stop.max_time_s (3 s) still moving"), std::string::npos) << cut.output;
+    EXPECT_NE(cut.output.find("and so is Dist50"), std::string::npos) << cut.output;
+    const auto whole = sylva::testing::runCli(base);
+    ASSERT_EQ(whole.status, 0) << whole.output;
+    EXPECT_EQ(whole.output.find("stop.max_time_s"), std::string::npos) << whole.output;
+}
+
 TEST(SimulateCli, AnOutFolderThatCannotBeMadeIsNamed) {
     const auto file = std::filesystem::temp_directory_path() / "sylvarock-tests" / "a-file";
     std::filesystem::create_directories(file.parent_path());

@@ -127,7 +127,7 @@ TEST(ElevationGridReader, ABinaryRasterIsNamedWithTheWayToConvertIt) {
 // GDAL's float32 NODATA marker in a file that does not declare it: a wall 3.4e38 m deep, refused
 // where it stands rather than run (run-outs of 1e38 m), and likewise from a grid GDAL read.
 TEST(ElevationGridReader, AHeightBeyondEarthsReliefIsAnUndeclaredNodata) {
-    expectError("grid_undeclared_nodata.asc", 7, "value 3: height -3.40282e+38 m is beyond Earth's relief");
+    expectError("grid_undeclared_nodata.asc", 7, "value 3: height -3.4028235e+38 m is beyond Earth's relief");
     std::vector<double> z = {1, 2, 3, 4, 5, 1e30};  // row 0 the southernmost: the last value is the north-east cell
     try {
         ElevationGrid::fromValues(3, 2, 0.5, 0.5, 1, z, "dtm.tif");

@@ -26,8 +26,11 @@ private:
 };
 
 // A number as a message shows it: the shortest readable form (0.7, 1e+308), not to_string's 0.700000.
+// Ten significant digits, so that a projected coordinate names its metre (6460100, where the stream's
+// default six gave 6.4601e+06, a 100 m strip).
 inline std::string readableNumber(double v) {
     std::ostringstream os;
+    os.precision(10);
     os << v;
     return os.str();
 }

@@ -99,6 +99,17 @@ private:
     std::unordered_map<long long, std::vector<Eigen::Vector3d>> cells_;  // x, y, radius
 };
 
+bool isPolygon(const OGRGeometry* g) {
+    const auto type = g ? wkbFlatten(g->getGeometryType()) : wkbNone;
+    return type == wkbPolygon || type == wkbMultiPolygon;
+}
+
+bool holdsPolygons(OGRLayer& layer) {
+    for (auto& f : layer)
+        if (isPolygon(f->GetGeometryRef())) return true;
+    return false;
+}
+
 }  // namespace
 
 StandForest readStandPolygons(const std::string& path, const Dtm& dtm, std::uint64_t seed, double tipDiameter) {
@@ -125,11 +136,11 @@ StandForest readStandPolygons(const std::string& path, const Dtm& dtm, std::uint
         if (layer->GetGeomType() == wkbNone) continue;
         const int standField = layer->GetLayerDefn()->GetFieldIndex("stand");
         const int structureField = layer->GetLayerDefn()->GetFieldIndex("structure");
-        std::size_t before = out.polygons.size();
+        // Its CRS first: polygons in degrees all lay "outside the terrain", which hid the cause.
+        if (holdsPolygons(*layer)) requireDtmCrs(*layer, path, dtm);
         for (auto& f : *layer) {
             const OGRGeometry* g = f->GetGeometryRef();
-            const auto type = g ? wkbFlatten(g->getGeometryType()) : wkbNone;
-            if (type != wkbPolygon && type != wkbMultiPolygon) continue;
+            if (!isPolygon(g)) continue;
             const std::string where = "layer '" + std::string(layer->GetName()) + "', feature " + std::to_string(++feature);
             if (standField < 0)
                 throw InputError(path, 0, "layer '" + std::string(layer->GetName()) +
@@ -206,7 +217,6 @@ StandForest readStandPolygons(const std::string& path, const Dtm& dtm, std::uint
             onTerrain.push_back(std::move(cut));
             out.polygons.push_back(s);
         }
-        if (out.polygons.size() > before) requireDtmCrs(*layer, path, dtm);
     }
     if (out.polygons.empty()) throw InputError(path, 0, "no polygon in the file: stands are polygons with a field `stand` naming an inventory");
     return out;

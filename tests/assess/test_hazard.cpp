@@ -974,6 +974,13 @@ TEST_F(StandPolygons, BadStandsSayWhatIsWrong) {
     o.standsPath = stands({{"{\"stand\": \"" + mo1() + "\"}", square}});
     o.outDir = (dir_ / "out").string();
     EXPECT_NE(errorOf([&] { runHazard(o); }).find("--trees and --stands both give the forest"), std::string::npos);
+    // Polygons in longitude and latitude (GeoJSON's default CRS) over a projected DTM: the CRS is named
+    // first, where every polygon was said to lie "outside the terrain".
+    const Dtm projected = readDtm(dtm("projected.asc", 60, 40, 5.0, 900000, 6400000, [](int, int) { return 100.0; }, true));
+    const std::string inDegrees =
+        errorOf([&] { readStandPolygons(stands({{"{\"stand\": \"" + mo1() + "\"}", {{{6.10, 45.20}, {6.11, 45.20}, {6.11, 45.21}, {6.10, 45.20}}}}}), projected, 1, kTip); });
+    EXPECT_NE(inDegrees.find("is in WGS 84"), std::string::npos) << inDegrees;
+    EXPECT_NE(inDegrees.find("reproject it"), std::string::npos) << inDegrees;
 }
 
 // A stand's forest seed is 64 bits: as a JSON number it was read rounded by jq and JavaScript

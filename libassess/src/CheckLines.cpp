@@ -89,7 +89,9 @@ std::vector<Eigen::Vector2d> verticesOf(const OGRLineString& line) {
 std::vector<RawLine> layerLines(OGRLayer& layer, int& count, int& others) {
     std::vector<RawLine> lines;
     const int nameField = layer.GetLayerDefn()->GetFieldIndex("name");
+    long number = 0;  // from 1 in the layer's order, as the other readers count (GeoJSON's FIDs start at 0)
     for (auto& feature : layer) {
+        ++number;
         const OGRGeometry* g = feature->GetGeometryRef();
         const auto type = g ? wkbFlatten(g->getGeometryType()) : wkbNone;
         if (type != wkbLineString && type != wkbMultiLineString) {
@@ -99,7 +101,7 @@ std::vector<RawLine> layerLines(OGRLayer& layer, int& count, int& others) {
         ++count;
         const bool named = nameField >= 0 && feature->IsFieldSetAndNotNull(nameField) && *feature->GetFieldAsString(nameField) != '\0';
         const std::string name = named ? feature->GetFieldAsString(nameField) : "line " + std::to_string(count);
-        const std::string where = "layer '" + std::string(layer.GetName()) + "', feature " + std::to_string(feature->GetFID());
+        const std::string where = "layer '" + std::string(layer.GetName()) + "', feature " + std::to_string(number);
         if (type == wkbLineString) {
             lines.push_back({{name, verticesOf(*g->toLineString())}, where});
             continue;

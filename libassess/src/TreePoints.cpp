@@ -24,17 +24,24 @@ stand::Forest readTreeLayer(const std::string& path, const Dtm& dtm) {
     GDALDatasetUniquePtr ds = openVectorFile(path);
     stand::Forest forest;
     forest.source = path;
-    const auto add = [&](const OGRPoint& point, const OGRFeature& feature, int dbhField) {
+    // Features are counted from 1 in the file's order, as the stand and release readers count them
+    // (GDAL's FID starts at 0 in GeoJSON and at 1 in a GeoPackage).
+    long number = 0;
+    const auto add = [&](const OGRPoint& point, const OGRFeature& feature, int dbhField, const std::string& where) {
         stand::Tree t;
         t.id = static_cast<long>(forest.trees.size() + 1);
         t.x = point.getX();
         t.y = point.getY();
         t.dbhCm = feature.GetFieldAsDouble(dbhField);
-        if (!feature.IsFieldSetAndNotNull(dbhField) || !(t.dbhCm > 0) || t.dbhCm > 200)
-            throw InputError(path, 0, "feature " + std::to_string(feature.GetFID()) + ": dbh_cm " +
-                                          (feature.IsFieldSetAndNotNull(dbhField) ? readableNumber(t.dbhCm) : "missing") +
-                                          " is not a DBH in (0, 200] cm");
-        if (!std::isfinite(t.x) || !std::isfinite(t.y)) throw InputError(path, 0, "feature " + std::to_string(feature.GetFID()) + ": a point without coordinates");
+        if (!feature.IsFieldSetAndNotNull(dbhField) || !(t.dbhCm > 0) || t.dbhCm > 200) {
+            // A text field that is no number reads as 0: show what it holds.
+            const bool text = feature.GetFieldDefnRef(dbhField)->GetType() == OFTString;
+            const std::string given = !feature.IsFieldSetAndNotNull(dbhField) ? "missing"
+                                      : text ? "'" + std::string(feature.GetFieldAsString(dbhField)) + "'"
+                                             : readableNumber(t.dbhCm);
+            throw InputError(path, 0, where + ": dbh_cm " + given + " is not a DBH in (0, 200] cm");
+        }
+        if (!std::isfinite(t.x) || !std::isfinite(t.y)) throw InputError(path, 0, where + ": a point without coordinates");
         t.heightM = stand::treeHeightM(t.dbhCm);
         t.crownLengthM = stand::crownLengthM(t.heightM);
         t.crownMassKg = stand::crownMassKg(t.dbhCm);
@@ -47,13 +54,15 @@ stand::Forest readTreeLayer(const std::string& path, const Dtm& dtm) {
         for (auto& feature : *layer) {
             const OGRGeometry* g = feature->GetGeometryRef();
             const auto type = g ? wkbFlatten(g->getGeometryType()) : wkbNone;
+            ++number;
             if (type != wkbPoint && type != wkbMultiPoint) continue;
             if (dbhField < 0)
                 throw InputError(path, 0, "layer '" + std::string(layer->GetName()) + "' has points but no field dbh_cm (each tree's DBH in cm)");
+            const std::string where = "layer '" + std::string(layer->GetName()) + "', feature " + std::to_string(number);
             if (type == wkbPoint)
-                add(*g->toPoint(), *feature, dbhField);
+                add(*g->toPoint(), *feature, dbhField, where);
             else
-                for (const OGRPoint* point : *g->toMultiPoint()) add(*point, *feature, dbhField);
+                for (const OGRPoint* point : *g->toMultiPoint()) add(*point, *feature, dbhField, where);
         }
         // After the loop: the CRS check reads the layer's extent, which restarts its reading.
         if (forest.trees.size() > before) requireDtmCrs(*layer, path, dtm);

@@ -190,15 +190,15 @@ TEST_F(CheckLines, RefusedInputsSayWhatIsWrong) {
 
     const std::string stub = geojson("stub.geojson", feature(R"({"name": "ok"})", "LineString", "[[700001, 6600001], [700009, 6600009]]") + ", " +
                                                          feature(R"({"name": "stub"})", "LineString", "[[700005, 6600005], [700005, 6600005]]"));
-    expectIn(refused(stub), stub + ": line 'stub' (layer 'stub', feature 1) has fewer than 2 distinct vertices");
+    expectIn(refused(stub), stub + ": line 'stub' (layer 'stub', feature 2) has fewer than 2 distinct vertices");
 
     const std::string far = geojson("far.geojson", feature(R"({"name": "far"})", "LineString", "[[700031, 6600000], [700040, 6600020]]"));
-    expectIn(refused(far), far + ": line 'far' (layer 'far', feature 0) lies entirely outside the DTM");
+    expectIn(refused(far), far + ": line 'far' (layer 'far', feature 1) lies entirely outside the DTM");
     expectIn(refused(far), "spans x 700000 to 700030, y 6600000 to 6600020");
 
     const std::string twice = geojson("twice.geojson", feature(R"({"name": "a"})", "LineString", "[[700001, 6600001], [700009, 6600009]]") + ", " +
                                                            feature(R"({"name": "a"})", "LineString", "[[700002, 6600001], [700009, 6600019]]"));
-    expectIn(refused(twice), twice + ": two lines are named 'a' (layer 'twice', feature 0 and layer 'twice', feature 1)");
+    expectIn(refused(twice), twice + ": two lines are named 'a' (layer 'twice', feature 1 and layer 'twice', feature 2)");
 }
 
 // Two passes by hand. Forest: 4 blocks, line "upper" crossed by runs 1 and 3 (10 and 20 kJ, 1 and

@@ -266,8 +266,11 @@ TEST_F(Hazard, TreesFromAPointLayerGetTheirAllometryAndBadOnesAreRefused) {
     EXPECT_DOUBLE_EQ(f.trees[0].dbhCm, 20);
     EXPECT_DOUBLE_EQ(f.trees[0].heightM, sylva::stand::treeHeightM(20));  // Eq. 11
     EXPECT_NE(errorOf([&] { readTreePoints(points("n.geojson", R"({"dbh": 20})"), d); }).find("has points but no field dbh_cm"), std::string::npos);
-    EXPECT_NE(errorOf([&] { readTreePoints(points("z.geojson", R"({"dbh_cm": 0})"), d); }).find("is not a DBH in (0, 200] cm"),
+    EXPECT_NE(errorOf([&] { readTreePoints(points("z.geojson", R"({"dbh_cm": 0})"), d); }).find("feature 1: dbh_cm 0 is not a DBH in (0, 200] cm"),
               std::string::npos);
+    // A text that is no number was shown as the 0 GDAL reads it as.
+    const std::string word = errorOf([&] { readTreePoints(points("w.geojson", R"({"dbh_cm": "abc"})"), d); });
+    EXPECT_NE(word.find("feature 1: dbh_cm 'abc' is not a DBH"), std::string::npos) << word;
     const std::string csv = write("t.csv", "x,y,dbh_cm\n12.5,7.5,31\n");
     EXPECT_DOUBLE_EQ(readTreePoints(csv, d).trees.at(0).dbhCm, 31);
     // A header alone made a bare map without a word.

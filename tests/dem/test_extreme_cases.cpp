@@ -384,6 +384,13 @@ TEST(ExtremeRelease, StemOutsideTheTerrainNamesTheForestFileAndLine) {
     const std::string path = forestCsv("stem-outside", "5,10,25\n612000,5170000,30\n");
     const std::string m = messageOf<sylva::InputError>([&] { Scene(straightSlope(35, {"forest.file=" + path})); });
     EXPECT_TRUE(mentions(m, path + ":3: stem 2 at (612000, 5170000) is outside the terrain (x in [0, 40]")) << m;
+    EXPECT_TRUE(mentions(m, "another frame or CRS")) << m;
+    // Just past the edge (a forest clipped to a DTM's raster extent, half a cell beyond its last
+    // cell centres) is said as such, not as another CRS.
+    const std::string edge = forestCsv("stem-at-edge", "5,10,25\n40.2,10,30\n");
+    const std::string e = messageOf<sylva::InputError>([&] { Scene(straightSlope(35, {"forest.file=" + edge})); });
+    EXPECT_TRUE(mentions(e, edge + ":3: stem 2 at (40.2, 10) is outside the terrain")) << e;
+    EXPECT_TRUE(mentions(e, "by 0.2 m: on a DTM the terrain ends at the outermost cell centres")) << e;
 }
 
 // A stem thinner than the tip diameter cannot be built: refused at load with its line, whatever the

@@ -74,7 +74,8 @@ Inputs readInputs(const AssessmentOptions& options, const std::function<void(con
 // and gave a PF50 of -0.100 from runs that had all hit the time limit.
 void noteUnfinishedRuns(const AssessmentDesign& design, const std::vector<Campaign>& plan, const CampaignStore& store,
                         const std::function<void(const std::string&)>& note) {
-    const std::string timeLimit = dem::toString(dem::StopReason::TimeLimit), leftDomain = dem::toString(dem::StopReason::LeftDomain);
+    const std::string timeLimit = dem::toString(dem::StopReason::TimeLimit), leftDomain = dem::toString(dem::StopReason::LeftDomain),
+                      failed = dem::toString(dem::StopReason::Failed);
     for (const dem::Model model : design.models) {
         long timed = 0, left = 0, finished = 0;
         for (std::size_t c = 0; c < plan.size(); ++c) {
@@ -82,7 +83,7 @@ void noteUnfinishedRuns(const AssessmentDesign& design, const std::vector<Campai
             for (const auto& [run, r] : store.runs(c)) {
                 timed += r.reason == timeLimit;
                 left += r.reason == leftDomain;
-                finished += r.reason != dem::toString(dem::StopReason::Failed);
+                finished += r.reason != failed;
             }
         }
         if (timed + left == 0) continue;

@@ -140,6 +140,23 @@ TEST_F(Hazard, DtmReadingErrorsNameTheFile) {
     }
     EXPECT_NE(errorOf([&] { readDtm((dir_ / "huge.tif").string()); }).find("100000 x 100000 cells, more than"), std::string::npos)
         << errorOf([&] { readDtm((dir_ / "huge.tif").string()); });
+    // An image of three bands (a coloured hillshade) was read as heights from its red band; heights
+    // with an alpha band are one band of values.
+    for (const bool alpha : {false, true}) {
+        const std::string tif = (dir_ / (alpha ? "alpha.tif" : "rgb.tif")).string();
+        {
+            GDALDatasetUniquePtr image(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(tif.c_str(), 3, 2, alpha ? 2 : 3, GDT_Byte, nullptr));
+            ASSERT_TRUE(image);
+            double gt[6] = {600000, 5, 0, 5100010, 0, -5};
+            image->SetGeoTransform(gt);
+            if (alpha) image->GetRasterBand(2)->SetColorInterpretation(GCI_AlphaBand);
+        }
+        if (alpha) {
+            EXPECT_NO_THROW(readDtm(tif));
+        } else {
+            EXPECT_NE(errorOf([&] { readDtm(tif); }).find("rgb.tif: the raster has 3 bands of values"), std::string::npos) << errorOf([&] { readDtm(tif); });
+        }
+    }
 }
 
 // The simulator works in metres: a DTM in degrees is refused, and so are absurd cells.

@@ -36,6 +36,7 @@ struct Dtm {
 struct GeoRaster {
     RasterGrid grid;
     std::vector<double> values;  // row-major, row 0 the northernmost; NaN where the band has no value (NODATA, mask)
+    int valueBands = 1;          // the file's bands other than alpha (a mask, not values)
 };
 // InputError naming the file: cannot be opened, no georeferencing, rotated or non-square cells.
 GeoRaster readRaster(const std::string& path);

@@ -27,8 +27,10 @@ const std::vector<Command>& commands() { return table(); }
 
 namespace {
 // Boost names the option a config file got wrong but not its line: each line is read again on its
-// own (under its section) until one is refused. 0 when none is alone (a key given twice).
-long refusedLine(const std::string& text, const po::options_description& options) {
+// own (under its section) until one is refused with the same message (Boost refuses an unknown key
+// while reading, before any value, so the first refused line need not be the one it named). 0 when
+// none is (a key given twice).
+long refusedLine(const std::string& text, const po::options_description& options, const std::string& message) {
     std::istringstream in(text);
     std::string line, section;
     for (long n = 1; std::getline(in, line); ++n) {
@@ -42,8 +44,8 @@ long refusedLine(const std::string& text, const po::options_description& options
         po::variables_map scratch;
         try {
             po::store(po::parse_config_file(alone, options), scratch);
-        } catch (const po::error&) {
-            return n;
+        } catch (const po::error& e) {
+            if (optionErrorMessage(e) == message) return n;
         }
     }
     return 0;
@@ -96,7 +98,8 @@ bool parse(int argc, const char* const* argv, const po::options_description& opt
         try {
             po::store(po::parse_config_file(in, options), vm);
         } catch (const po::error& e) {
-            throw InputError(path, refusedLine(text.str(), options), optionErrorMessage(e));
+            const std::string message = optionErrorMessage(e);
+            throw InputError(path, refusedLine(text.str(), options, message), message);
         }
     }
     po::notify(vm);

@@ -67,7 +67,9 @@ TEST(CliHelp, AConfigFileRefusalNamesItsLine) {
     const std::string path = ::testing::TempDir() + "cli_config_refusal.ini";
     for (const auto& [text, line] : {std::pair<const char*, const char*>{"# a campaign\nruns = 5\n\nseed = x\n", ":4:"},
                                      {"runs = 5\nthreads = two\n", ":2:"},
-                                     {"runs = 5\n\nrun = 6\n", ":3:"}}) {
+                                     {"runs = 5\n\nrun = 6\n", ":3:"},
+                                     // Boost refuses the unknown key before it reads any value.
+                                     {"seed = x\nruns = 5\nbogus = 1\n", ":3: unrecognised option 'bogus'"}}) {
         std::ofstream(path) << text;
         const auto r = runCli("simulate --scene data/scenes/no-forest.ini --config " + path + " --out " +
                               ::testing::TempDir() + "cli_config_refusal");

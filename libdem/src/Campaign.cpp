@@ -1,7 +1,9 @@
 #include "libdem/Campaign.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <exception>
+#include <fstream>
 #include <mutex>
 #include <string>
 
@@ -39,10 +41,19 @@ namespace {
 // A campaign keeps every run's record until it is written: runs beyond the machine's memory would
 // fail in the allocator, or in the kernel's out-of-memory killer, after the index alone had taken
 // gigabytes. Half the physical memory leaves room for what the records hold besides themselves.
-void requireMemoryFor(long runs) {
+// In a container the cgroup's limit (cgroup v2's memory.max, "max" when there is none) is the
+// machine's memory.
+double availableMemory() {
     const long pages = sysconf(_SC_PHYS_PAGES), pageBytes = sysconf(_SC_PAGE_SIZE);
-    if (pages <= 0 || pageBytes <= 0) return;  // not known here: the allocator will say
-    const double physical = static_cast<double>(pages) * static_cast<double>(pageBytes);
+    double bytes = pages > 0 && pageBytes > 0 ? static_cast<double>(pages) * static_cast<double>(pageBytes) : 0;
+    double limit = 0;
+    if (std::ifstream("/sys/fs/cgroup/memory.max") >> limit && limit > 0) bytes = bytes > 0 ? std::min(bytes, limit) : limit;
+    return bytes;
+}
+
+void requireMemoryFor(long runs) {
+    const double physical = availableMemory();
+    if (!(physical > 0)) return;  // not known here: the allocator will say
     const double needed = static_cast<double>(runs) * static_cast<double>(sizeof(RunResult) + sizeof(int));
     if (needed <= 0.5 * physical) return;
     const auto gb = [](double bytes) { return readableNumber(static_cast<double>(static_cast<long>(bytes / 1e8)) / 10); };

@@ -32,15 +32,15 @@ TreeField::TreeField(const stand::Forest& forest, const SoilBed& soil, double ti
         if (t.x < soil.xmin() || t.x > soil.xmax() || t.y < soil.ymin() || t.y > soil.ymax()) {
             std::ostringstream what;
             what.precision(10);  // projected coordinates (Lambert-93: 6 460 196 m) to the centimetre
-            // Just past an edge is a forest clipped to the raster's extent: a DTM's terrain ends at its
-            // outermost cell centres, half a cell inside. Far past it, the forest is elsewhere.
+            // Within half a cell of a DTM's terrain is a forest clipped to the raster's extent: the
+            // terrain ends at the outermost cell centres. Farther, the forest is elsewhere.
             const double beyond = std::max({soil.xmin() - t.x, t.x - soil.xmax(), soil.ymin() - t.y, t.y - soil.ymax()});
-            const bool atEdge = beyond < 0.01 * std::max(soil.xmax() - soil.xmin(), soil.ymax() - soil.ymin());
+            const bool atEdge = beyond <= 0.5 * soil.dtmCellSize();
             what << (forest.source.empty() ? "forest: " : "") << "stem " << t.id << " at (" << t.x << ", " << t.y
                  << ") is outside the terrain (x in [" << soil.xmin() << ", " << soil.xmax() << "], y in ["
                  << soil.ymin() << ", " << soil.ymax() << "] m)"
-                 << (atEdge ? ", by " + readableNumber(beyond) + " m: on a DTM the terrain ends at the outermost cell centres, "
-                              "half a cell inside the raster's edge; keep the trees that far inside"
+                 << (atEdge ? ", by " + readableNumber(std::round(beyond * 100) / 100) + " m: the terrain ends at the DTM's "
+                              "outermost cell centres, half a cell inside the raster's edge; keep the trees that far inside"
                             : ": a forest in another frame or CRS?");
             throw InputError(forest.source, t.line, what.str());
         }

@@ -11,11 +11,14 @@
 #include <fstream>
 #include <functional>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "DemTestScenes.hpp"
 #include "libdem/BlockMotion.hpp"
 #include "libdem/Campaign.hpp"
 #include "libdem/CampaignSummary.hpp"
+#include "libdem/ElevationGrid.hpp"
 #include "libdem/SimulationError.hpp"
 #include "libdem/SoilZones.hpp"
 #include "libdem/Stem.hpp"
@@ -385,12 +388,20 @@ TEST(ExtremeRelease, StemOutsideTheTerrainNamesTheForestFileAndLine) {
     const std::string m = messageOf<sylva::InputError>([&] { Scene(straightSlope(35, {"forest.file=" + path})); });
     EXPECT_TRUE(mentions(m, path + ":3: stem 2 at (612000, 5170000) is outside the terrain (x in [0, 40]")) << m;
     EXPECT_TRUE(mentions(m, "another frame or CRS")) << m;
-    // Just past the edge (a forest clipped to a DTM's raster extent, half a cell beyond its last
-    // cell centres) is said as such, not as another CRS.
-    const std::string edge = forestCsv("stem-at-edge", "5,10,25\n40.2,10,30\n");
-    const std::string e = messageOf<sylva::InputError>([&] { Scene(straightSlope(35, {"forest.file=" + edge})); });
-    EXPECT_TRUE(mentions(e, edge + ":3: stem 2 at (40.2, 10) is outside the terrain")) << e;
-    EXPECT_TRUE(mentions(e, "by 0.2 m: on a DTM the terrain ends at the outermost cell centres")) << e;
+    // Within half a cell of a DTM's terrain (a forest clipped to the raster's extent, its terrain
+    // ending at the outermost cell centres) is said as such, not as another CRS; farther, or on a
+    // profile, the CRS is suspected.
+    const ElevationGrid dtm = ElevationGrid::fromValues(20, 10, 2.5, 2.5, 5.0, std::vector<double>(200, 100.0), "flat.asc");
+    const auto refusal = [&](const std::string& name, const std::string& stem) {
+        const std::string path = forestCsv(name, "50,20,25\n" + stem + ",30\n");
+        return std::pair(path, messageOf<sylva::InputError>([&] { Scene(sceneFromOverrides({"forest.file=" + path}), dtm); }));
+    };
+    const auto [edge, e] = refusal("stem-at-edge", "98.7,20");
+    EXPECT_TRUE(mentions(e, edge + ":3: stem 2 at (98.7, 20) is outside the terrain")) << e;
+    EXPECT_TRUE(mentions(e, "by 1.2 m: the terrain ends at the DTM's outermost cell centres")) << e;
+    const auto [far, f] = refusal("stem-past-edge", "100.5,20");
+    EXPECT_TRUE(mentions(f, "another frame or CRS")) << f;
+    EXPECT_FALSE(mentions(m, "cell centres")) << m;
 }
 
 // A stem thinner than the tip diameter cannot be built: refused at load with its line, whatever the

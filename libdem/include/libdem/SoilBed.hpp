@@ -61,6 +61,7 @@ public:
     // height already known says about the heights around it, without asking for them.
     double steepestRise() const { return steepestRise_; }
     bool onProfile() const { return profile_.has_value(); }  // a slope profile extruded sideways, not a DTM
+    double dtmCellSize() const { return grid_ ? grid_->cellSize() : 0.0; }  // m; 0 on a profile
     // Distance along the surface from x0 to x1 at cross-slope position y (the run-out measure);
     // negative when x1 < x0.
     double alongSlope(double x0, double x1, double y) const;

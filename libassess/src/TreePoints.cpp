@@ -24,9 +24,6 @@ stand::Forest readTreeLayer(const std::string& path, const Dtm& dtm) {
     GDALDatasetUniquePtr ds = openVectorFile(path);
     stand::Forest forest;
     forest.source = path;
-    // Features are counted from 1 in the file's order, as the stand and release readers count them
-    // (GDAL's FID starts at 0 in GeoJSON and at 1 in a GeoPackage).
-    long number = 0;
     const auto add = [&](const OGRPoint& point, const OGRFeature& feature, int dbhField, const std::string& where) {
         stand::Tree t;
         t.id = static_cast<long>(forest.trees.size() + 1);
@@ -51,6 +48,9 @@ stand::Forest readTreeLayer(const std::string& path, const Dtm& dtm) {
         if (layer->GetGeomType() == wkbNone) continue;
         const int dbhField = layer->GetLayerDefn()->GetFieldIndex("dbh_cm");
         const std::size_t before = forest.trees.size();
+        // Features are counted from 1 in each layer's order, as the release and check-line readers
+        // count them (GDAL's FID starts at 0 in GeoJSON and at 1 in a GeoPackage).
+        long number = 0;
         for (auto& feature : *layer) {
             const OGRGeometry* g = feature->GetGeometryRef();
             const auto type = g ? wkbFlatten(g->getGeometryType()) : wkbNone;

@@ -115,12 +115,18 @@ std::vector<std::string> dataWarnings(const Inventory& inv, const std::string& s
         }
         std::sort(stems.begin(), stems.end(),
                   [](const Stem* a, const Stem* b) { return std::tie(a->x, a->y, a->line) < std::tie(b->x, b->y, b->line); });
-        for (std::size_t i = 1; i < stems.size(); ++i)
-            if (stems[i]->x == stems[i - 1]->x && stems[i]->y == stems[i - 1]->y)
-                warnings.push_back(stemsSource + ":" + std::to_string(stems[i]->line) + ": stem '" + stems[i]->id +
-                                   "' is at the same position " + coordinates(*stems[i]) + " as stem '" +
-                                   stems[i - 1]->id + "' (line " + std::to_string(stems[i - 1]->line) +
-                                   "); kept, its nearest-neighbour distance is 0");
+        for (std::size_t i = 1; i < stems.size(); ++i) {
+            const Stem &s = *stems[i], &before = *stems[i - 1];
+            if (s.x != before.x || s.y != before.y) continue;
+            const bool oneStool = s.stool && s.stool == before.stool;
+            warnings.push_back(stemsSource + ":" + std::to_string(s.line) + ": stem '" + s.id + "' is at the same position " +
+                               coordinates(s) + " as stem '" + before.id + "' (line " + std::to_string(before.line) + ")" +
+                               (oneStool ? ", its stool's position given to both?" : "") +
+                               "; kept, its nearest-neighbour distance is 0" +
+                               (oneStool ? "; virtual forests stand a stool's stems recorded at one point on a ring "
+                                           "around it, touching at breast height"
+                                         : ""));
+        }
     }
     // A coppice stool's stems stand within a metre or two of each other (1.25 m at most in the shipped
     // stands); members far apart are more likely a stool id reused than one stool.

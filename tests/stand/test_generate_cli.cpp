@@ -100,6 +100,29 @@ TEST(GenerateCli, BadOptionsExitWithStatusTwoAndSayWhy) {
 
 // A --plot-dir that cannot be made is refused before any forest is written: found after them, it
 // left the forests behind a failed command (exit 2), to be taken for its output.
+// A stool's position given to each of its stems: generate wrote a forest with two stems at one place,
+// which simulate refuses ("stands where the stem of line 2 stands"). Its stems now stand apart.
+TEST(GenerateCli, AStoolRecordedAtOnePointGivesAForestSimulateReads) {
+    const std::string dir = ::testing::TempDir();
+    {
+        std::ofstream stems(dir + "cli_point_stems.csv");
+        stems << "plot,stem,x,y,dbh_cm,species,stool\n1,1,10,10,20,beech,1\n1,2,10,10,18,beech,1\n"
+                 "1,3,30,20,25,beech,\n1,4,20,30,22,beech,2\n1,5,20,30,12,beech,2\n1,6,20,30,16,beech,2\n";
+        std::ofstream plots(dir + "cli_point_plots.csv");
+        plots << "plot,xmin,ymin,xmax,ymax\n1,0,0,50,50\n";
+    }
+    const std::string out = dir + "cli_point_A.csv";
+    const CliRun r = sylva::testing::runCli("generate --stems " + dir + "cli_point_stems.csv --plots " + dir +
+                                            "cli_point_plots.csv --structure aggregated --extent 0,0,200,200 --seed 3 --out " + out);
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("cli_point_stems.csv:3: stem '2' is at the same position (10, 10) as stem '1' (line 2), its "
+                            "stool's position given to both?"),
+              std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("on a ring around it, touching at breast height"), std::string::npos) << r.output;
+    const Forest f = readForestCsv(out);  // threw on the old code
+    EXPECT_EQ(f.trees.size(), 96u);       // 6 stems in 0.25 ha, over 4 ha
+}
+
 TEST(GenerateCli, AnUnmakeablePlotDirIsRefusedBeforeAnyForestIsWritten) {
     const std::string dir = ::testing::TempDir() + "/generate_cli_plot_dir/";
     std::filesystem::remove_all(dir);

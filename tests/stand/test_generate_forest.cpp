@@ -131,6 +131,27 @@ TEST(StandCatalogue, AStoolIdInTwoPlotsNamesTwoStools) {
     EXPECT_DOUBLE_EQ(c.stoolsPerHa(), 3 / 0.08);
 }
 
+// Inventories often give each stem its stool's position. Two stems at one place would start inside
+// each other (simulate refused the forest generate wrote): the stems sharing a position (within 1 cm)
+// stand on a ring around it, each touching the next at breast height (ring chord = the largest DBH).
+TEST(StandCatalogue, AStoolsStemsRecordedAtOnePointStandOnARing) {
+    Inventory inv = smallStand();
+    inv.stems = {stem("1", 5, 5, 10, "a"), stem("2", 5, 5, 12, "a"), stem("3", 5.004, 5, 8, "a"),
+                 stem("4", 15, 15, 20, "b"), stem("5", 15.5, 15, 18, "b")};
+    const StandCatalogue c(inv, "at_one_point.csv");
+    const StoolTemplate& a = c.stools()[0];
+    ASSERT_EQ(a.offsets.size(), 3u);
+    // Three stems, the largest 12 cm: side 0.12 m, so radius 0.12 / (2 sin 60 deg) = 0.0693 m.
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_NEAR(a.offsets[i].norm(), 0.12 / std::sqrt(3.0), 1e-12) << i;
+        EXPECT_NEAR((a.offsets[i] - a.offsets[(i + 1) % 3]).norm(), 0.12, 1e-12) << i;
+    }
+    EXPECT_NEAR((a.offsets[0] + a.offsets[1] + a.offsets[2]).norm(), 0.0, 1e-12);
+    // Stems recorded apart keep their own positions: stool "b"'s are 0.5 m apart about their centroid.
+    EXPECT_NEAR(c.stools()[1].offsets[0].x(), -0.25, 1e-12);
+    EXPECT_NEAR(c.stools()[1].offsets[1].x(), 0.25, 1e-12);
+}
+
 TEST(StandCatalogue, RejectsAnInventoryWithoutStems) {
     Inventory inv = smallStand();
     inv.stems.clear();

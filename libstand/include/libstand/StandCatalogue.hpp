@@ -16,7 +16,9 @@ struct StemTemplate {
 };
 
 struct StoolTemplate {
-    std::vector<Eigen::Vector2d> offsets;  // m, stem position minus the stool centroid (mean of its stems)
+    // m, stem position minus the stool centroid (mean of its stems); stems the inventory gives one
+    // position (within 1 cm) stand on a ring around it, touching at breast height
+    std::vector<Eigen::Vector2d> offsets;
     std::vector<StemTemplate> stems;       // same order as offsets
 };
 

@@ -46,7 +46,7 @@ bool RasterGrid::cellOf(double x, double y, int& col, int& row) const {
     return true;
 }
 
-GeoRaster readRaster(const std::string& path) {
+GeoRaster readRaster(const std::string& path, const std::string& values) {
     initGdal();
     CPLErrorReset();
     GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
@@ -68,8 +68,12 @@ GeoRaster readRaster(const std::string& path) {
         throw InputError(path, 0, "cells of " + readableNumber(t[1]) + " x " + readableNumber(-t[5]) +
                                       " m: sylvarock needs square cells, north up (gdalwarp -tr D D)");
     g.crsWkt = wktOf(ds->GetSpatialRef());
-    raster.valueBands = 0;
-    for (int b = 1; b <= ds->GetRasterCount(); ++b) raster.valueBands += ds->GetRasterBand(b)->GetColorInterpretation() != GCI_AlphaBand;
+    // Band 1 of an image (a coloured hillshade, an orthophoto) was read as values without a word.
+    int valueBands = 0;
+    for (int b = 1; b <= ds->GetRasterCount(); ++b) valueBands += ds->GetRasterBand(b)->GetColorInterpretation() != GCI_AlphaBand;
+    if (valueBands > 1)
+        throw InputError(path, 0, "the raster has " + std::to_string(valueBands) + " bands of values (an image? a coloured hillshade?): " +
+                                      values + " are one band; give that band alone (gdal_translate -b N)");
     GDALRasterBand* band = ds->GetRasterBand(1);
     std::vector<double>& z = raster.values;
     z.resize(static_cast<std::size_t>(g.columns) * g.rows);
@@ -95,7 +99,7 @@ GeoRaster readRaster(const std::string& path) {
 }
 
 Dtm readDtm(const std::string& path) {
-    GeoRaster raster = readRaster(path);
+    GeoRaster raster = readRaster(path, "a DTM's heights");
     Dtm d;
     d.path = path;
     d.grid = raster.grid;
@@ -103,10 +107,6 @@ Dtm readDtm(const std::string& path) {
     const auto& t = g.geoTransform;
     if (g.columns < 2 || g.rows < 2)
         throw InputError(path, 0, "a DTM of " + std::to_string(g.columns) + " x " + std::to_string(g.rows) + " cells: at least 2 x 2 are needed");
-    // Band 1 of an image (a coloured hillshade, an orthophoto) was read as heights without a word.
-    if (raster.valueBands > 1)
-        throw InputError(path, 0, "the raster has " + std::to_string(raster.valueBands) + " bands of values (an image? a coloured "
-                                  "hillshade?): a DTM is one band of heights; give that band alone (gdal_translate -b N)");
     // The simulator works in metres: a DTM in degrees or feet would be run with cells of 1e-4 "m".
     OGRSpatialReference crs;
     if (!g.crsWkt.empty() && crs.importFromWkt(g.crsWkt.c_str()) == OGRERR_NONE) {

@@ -49,7 +49,7 @@ std::vector<char> cellsInPolygons(GDALDataset& ds, const std::string& path, cons
 // The DTM cells whose centre falls on a release raster's cell holding a value other than 0 (and not
 // NODATA): a Rockyfor3D-style release raster, on the DTM's grid or any other in its CRS.
 std::vector<char> cellsOnRaster(const std::string& path, const Dtm& dtm) {
-    const GeoRaster release = readRaster(path);
+    const GeoRaster release = readRaster(path, "a release raster's marks");
     if (!sameCrs(release.grid.crsWkt, dtm.grid.crsWkt))
         throw InputError(path, 0, "the release raster is in " + crsName(release.grid.crsWkt) + ", the DTM (" + dtm.path + ") in " +
                                       crsName(dtm.grid.crsWkt) + ": reproject it (gdalwarp -t_srs) to the DTM's CRS");

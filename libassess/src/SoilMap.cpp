@@ -80,7 +80,7 @@ void zonesFromPolygons(GDALDataset& ds, const std::string& path, const std::vect
 }
 
 void zonesFromRaster(const std::string& path, const std::vector<SoilType>& types, const Dtm& dtm, dem::SoilZones& z) {
-    const GeoRaster map = readRaster(path);
+    const GeoRaster map = readRaster(path, "a soil map's codes");
     if (!sameCrs(map.grid.crsWkt, dtm.grid.crsWkt))
         throw InputError(path, 0, "the soil raster is in " + crsName(map.grid.crsWkt) + ", the DTM (" + dtm.path + ") in " +
                                       crsName(dtm.grid.crsWkt) + ": reproject it (gdalwarp -t_srs) to the DTM's CRS");

@@ -245,6 +245,19 @@ TEST_F(Hazard, ReleaseRasterMarksTheCellsWhoseCentreFallsOnAValue) {
     EXPECT_NE(errorOf([&] { readReleaseCells(zeros, d); }).find("a raster of zeros"), std::string::npos);
     EXPECT_NE(errorOf([&] { readReleaseCells(write("junk.txt", "not a raster\n"), d); }).find("cannot read it as polygons or a raster"),
               std::string::npos);
+    // An image of the release area (three colour bands) was read as marks from its red band.
+    const std::string rgb = (dir_ / "release_rgb.tif").string();
+    {
+        GDALDatasetUniquePtr image(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(rgb.c_str(), 3, 2, 3, GDT_Byte, nullptr));
+        ASSERT_TRUE(image);
+        double gt[6] = {0, 10, 0, 20, 0, -10};
+        image->SetGeoTransform(gt);
+        for (int b = 1; b <= 3; ++b) image->GetRasterBand(b)->Fill(255);
+    }
+    const std::string image = errorOf([&] { readReleaseCells(rgb, d); });
+    EXPECT_NE(image.find("release_rgb.tif: the raster has 3 bands of values (an image? a coloured hillshade?): a release raster's marks "
+                         "are one band"),
+              std::string::npos) << image;
 }
 
 TEST_F(Hazard, ReleaseErrorsSayWhatIsWrong) {

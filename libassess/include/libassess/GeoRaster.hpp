@@ -36,10 +36,11 @@ struct Dtm {
 struct GeoRaster {
     RasterGrid grid;
     std::vector<double> values;  // row-major, row 0 the northernmost; NaN where the band has no value (NODATA, mask)
-    int valueBands = 1;          // the file's bands other than alpha (a mask, not values)
 };
-// InputError naming the file: cannot be opened, no georeferencing, rotated or non-square cells.
-GeoRaster readRaster(const std::string& path);
+// InputError naming the file: cannot be opened, no georeferencing, rotated or non-square cells,
+// more than one band of values (an alpha band is a mask); `values` names what the band holds
+// ("a DTM's heights") for that message.
+GeoRaster readRaster(const std::string& path, const std::string& values);
 
 // Band 1 of the raster as a terrain. InputError naming the file: readRaster's, fewer than 2 x 2 cells,
 // a CRS in degrees or not in metres, cells outside 0.01-1000 m.

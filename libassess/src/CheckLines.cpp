@@ -184,7 +184,7 @@ std::vector<CheckLine> readCheckLines(const std::string& path, const Dtm& dtm, i
         requireDtmCrs(*layer, path, dtm);
         for (auto& l : lines) raw.push_back(std::move(l));
     }
-    if (raw.empty()) throw InputError(path, 0, "no line in the file: check lines are LineString or MultiLineString features");
+    if (raw.empty()) throw InputError(path, 0, "no line in the file (" + geometriesHeld(*ds) + "): check lines are LineString or MultiLineString features");
     if (passedOver) *passedOver = others;
     std::map<std::string, const RawLine*> byName;
     std::vector<CheckLine> lines;

@@ -2,6 +2,8 @@
 
 #include <cpl_conv.h>
 
+#include <map>
+
 #include "libcommon/InputError.hpp"
 
 namespace sylva::assess {
@@ -61,6 +63,28 @@ void requireDtmCrs(OGRLayer& layer, const std::string& path, const Dtm& dtm) {
     if (!sameCrs(crs, dtm.grid.crsWkt))
         throw InputError(path, 0, "layer '" + std::string(layer.GetName()) + "' is in " + crsName(crs) + ", the DTM (" + dtm.path + ") in " +
                                       crsName(dtm.grid.crsWkt) + ": reproject it (ogr2ogr -t_srs) to the DTM's CRS");
+}
+
+std::string geometriesHeld(GDALDataset& ds) {
+    std::map<std::string, long> count;
+    bool collection = false;
+    for (OGRLayer* layer : ds.GetLayers()) {
+        layer->ResetReading();
+        for (auto& feature : *layer)
+            if (const OGRGeometry* g = feature->GetGeometryRef()) {
+                const OGRwkbGeometryType type = wkbFlatten(g->getGeometryType());
+                ++count[OGRGeometryTypeToName(type)];
+                collection = collection || type == wkbGeometryCollection;
+            }
+        layer->ResetReading();
+    }
+    if (count.empty()) return "it holds no feature with a geometry";
+    std::string held;
+    std::size_t k = 0;
+    for (const auto& [name, n] : count)
+        held += (k++ == 0 ? "" : k == count.size() ? " and " : ", ") + std::to_string(n) + " " + name;
+    return "it holds " + held + (count.size() == 1 && count.begin()->second == 1 ? " feature" : " features") +
+           (collection ? "; a geometry collection's parts become features of their own with ogr2ogr -explodecollections" : "");
 }
 
 void requireValidPolygon(const OGRGeometry& polygon, const std::string& path, const std::string& where) {

@@ -36,6 +36,11 @@ GDALDatasetUniquePtr openVectorUnlessRaster(const std::string& path);
 // degrees, it was written in a projected CRS without saying which, and is taken to be in the DTM's.
 void requireDtmCrs(OGRLayer& layer, const std::string& path, const Dtm& dtm);
 
+// What a vector file holds, for an error saying the file holds none of what was asked: "it holds 3
+// Point and 1 Geometry Collection features" (a collection's parts: ogr2ogr -explodecollections), or
+// "it holds no feature with a geometry". Reads every layer from its start.
+std::string geometriesHeld(GDALDataset& ds);
+
 // InputError naming the file and `where` (its layer and feature) for a polygon that GEOS finds
 // invalid, such as a ring crossing itself: which cells lie inside it is then undefined (GEOS's
 // Contains fails on it and says no for every cell).

@@ -33,7 +33,7 @@ std::vector<char> cellsInPolygons(GDALDataset& ds, const std::string& path, cons
         // and its CRS is not what is wrong with it (the check reads the extent, which restarts the reading).
         if (polygons.size() > before) requireDtmCrs(*layer, path, dtm);
     }
-    if (polygons.empty()) throw InputError(path, 0, "no polygon in the file: a release area is a polygon layer");
+    if (polygons.empty()) throw InputError(path, 0, "no polygon in the file (" + geometriesHeld(ds) + "): a release area is a polygon layer");
     const double west = grid.geoTransform[0], north = grid.geoTransform[3];
     const double east = west + grid.columns * grid.cellSize(), south = north + grid.rows * grid.geoTransform[5];
     for (const auto& polygon : polygons) {

@@ -76,7 +76,7 @@ void zonesFromPolygons(GDALDataset& ds, const std::string& path, const std::vect
         }
         if (any) requireDtmCrs(*layer, path, dtm);
     }
-    if (feature == 0) throw InputError(path, 0, "no polygon in the file: a soil map is polygons with a field `soil`, or a raster of codes");
+    if (feature == 0) throw InputError(path, 0, "no polygon in the file (" + geometriesHeld(ds) + "): a soil map is polygons with a field `soil`, or a raster of codes");
 }
 
 void zonesFromRaster(const std::string& path, const std::vector<SoilType>& types, const Dtm& dtm, dem::SoilZones& z) {

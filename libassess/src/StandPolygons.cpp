@@ -218,7 +218,7 @@ StandForest readStandPolygons(const std::string& path, const Dtm& dtm, std::uint
             out.polygons.push_back(s);
         }
     }
-    if (out.polygons.empty()) throw InputError(path, 0, "no polygon in the file: stands are polygons with a field `stand` naming an inventory");
+    if (out.polygons.empty()) throw InputError(path, 0, "no polygon in the file (" + geometriesHeld(*ds) + "): stands are polygons with a field `stand` naming an inventory");
     return out;
 }
 

@@ -67,7 +67,7 @@ stand::Forest readTreeLayer(const std::string& path, const Dtm& dtm) {
         // After the loop: the CRS check reads the layer's extent, which restarts its reading.
         if (forest.trees.size() > before) requireDtmCrs(*layer, path, dtm);
     }
-    if (forest.trees.empty()) throw InputError(path, 0, "no point in the file: trees are a point layer with a dbh_cm field");
+    if (forest.trees.empty()) throw InputError(path, 0, "no point in the file (" + geometriesHeld(*ds) + "): trees are a point layer with a dbh_cm field");
     return forest;
 }
 

@@ -269,10 +269,22 @@ TEST_F(Hazard, ReleaseErrorsSayWhatIsWrong) {
     EXPECT_NE(errorOf([&] { readReleaseCells(wgs, d); }).find("reproject it"), std::string::npos) << errorOf([&] { readReleaseCells(wgs, d); });
     const std::string points = write("p.geojson", R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {},
         "geometry": {"type": "Point", "coordinates": [700010, 6600010]}}]})");
-    EXPECT_NE(errorOf([&] { readReleaseCells(points, d); }).find("no polygon"), std::string::npos);
+    // The refusal says what the file holds: the trees' points given as the release, say.
+    EXPECT_NE(errorOf([&] { readReleaseCells(points, d); }).find("no polygon in the file (it holds 1 Point feature)"), std::string::npos)
+        << errorOf([&] { readReleaseCells(points, d); });
     // Empty, it was told to reproject (an empty GeoJSON layer reads as WGS 84).
     const std::string empty = write("e.geojson", R"({"type": "FeatureCollection", "features": []})");
-    EXPECT_NE(errorOf([&] { readReleaseCells(empty, d); }).find("no polygon"), std::string::npos) << errorOf([&] { readReleaseCells(empty, d); });
+    EXPECT_NE(errorOf([&] { readReleaseCells(empty, d); }).find("no polygon in the file (it holds no feature with a geometry)"), std::string::npos)
+        << errorOf([&] { readReleaseCells(empty, d); });
+    // Polygons inside a geometry collection are not a polygon layer: the refusal says how to split it.
+    const std::string collection = write("gc.geojson", R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {},
+        "geometry": {"type": "GeometryCollection", "geometries": [{"type": "Polygon", "coordinates": [[[700002, 6600002], [700028, 6600002],
+        [700028, 6600018], [700002, 6600018], [700002, 6600002]]]}, {"type": "Point", "coordinates": [700010, 6600010]}]}},
+        {"type": "Feature", "properties": {}, "geometry": {"type": "Point", "coordinates": [700010, 6600010]}}]})");
+    const std::string parts = errorOf([&] { readReleaseCells(collection, d); });
+    EXPECT_NE(parts.find("(it holds 1 Geometry Collection and 1 Point features; a geometry collection's parts become features of their "
+                         "own with ogr2ogr -explodecollections)"),
+              std::string::npos) << parts;
     // A bow tie (its ring crosses itself) has no defined inside: GEOS's Contains said no for every
     // cell and the error blamed the polygon's size or place.
     const std::string bowTie = write("bowtie.geojson", R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {},
@@ -303,6 +315,11 @@ TEST_F(Hazard, TreesFromAPointLayerGetTheirAllometryAndBadOnesAreRefused) {
     EXPECT_NE(word.find("feature 1: dbh_cm 'abc' is not a DBH"), std::string::npos) << word;
     const std::string csv = write("t.csv", "x,y,dbh_cm\n12.5,7.5,31\n");
     EXPECT_DOUBLE_EQ(readTreePoints(csv, d).trees.at(0).dbhCm, 31);
+    // Polygons (crowns, or the stands' file) are not trees: the refusal says what the file holds.
+    const std::string crowns = write("crowns.geojson", R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {"dbh_cm": 20},
+        "geometry": {"type": "Polygon", "coordinates": [[[2, 2], [8, 2], [8, 8], [2, 8], [2, 2]]]}}]})");
+    EXPECT_NE(errorOf([&] { readTreePoints(crowns, d); }).find("no point in the file (it holds 1 Polygon feature)"), std::string::npos)
+        << errorOf([&] { readTreePoints(crowns, d); });
     // A header alone made a bare map without a word.
     EXPECT_NE(errorOf([&] { readTreePoints(write("h.csv", "x,y,dbh_cm\n"), d); }).find("no tree in the file"), std::string::npos);
 }

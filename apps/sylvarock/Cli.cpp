@@ -13,6 +13,7 @@
 
 #include "libdem/OptionErrorMessage.hpp"
 #include "libcommon/InputError.hpp"
+#include "libcommon/LineEnds.hpp"
 
 namespace sylva::cli {
 
@@ -92,14 +93,15 @@ bool parse(int argc, const char* const* argv, const po::options_description& opt
         if (std::filesystem::is_directory(path)) throw InputError(path, 0, "is a folder, not a config file");
         std::ifstream file(path);
         if (!file) throw InputError(path, 0, "cannot open config file");
-        std::stringstream text;
-        text << file.rdbuf();
-        std::istringstream in(text.str());
+        std::stringstream read;
+        read << file.rdbuf();
+        const std::string text = withLoneCarriageReturnsAsLineFeeds(read.str());
+        std::istringstream in(text);
         try {
             po::store(po::parse_config_file(in, options), vm);
         } catch (const po::error& e) {
             const std::string message = optionErrorMessage(e);
-            throw InputError(path, refusedLine(text.str(), options, message), message);
+            throw InputError(path, refusedLine(text, options, message), message);
         }
     }
     po::notify(vm);

@@ -21,6 +21,7 @@
 #include "libdem/LumpedCalibration.hpp"
 #include "libcommon/CsvTable.hpp"
 #include "libcommon/InputError.hpp"
+#include "libcommon/LineEnds.hpp"
 
 namespace sylva::cli {
 namespace {
@@ -81,8 +82,16 @@ const char* const kFitComments[] = {"# calibrated with:", "# DEM Dist50"};
 
 void rewriteLumpedSection(const std::string& path, const std::string& comment,
                           const std::vector<std::pair<std::string, std::string>>& keys) {
-    std::ifstream in(path);
-    if (!in) throw InputError(path, 0, "cannot open scene file");
+    std::ifstream file(path, std::ios::binary);
+    if (!file) throw InputError(path, 0, "cannot open scene file");
+    const std::string original((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    // The file keeps its line ends (CR LF from Windows, CR alone from old Mac editors): mixed ones
+    // confuse editors and diffs.
+    const std::size_t firstEnd = original.find_first_of("\r\n");
+    const std::string lineEnd = firstEnd == std::string::npos || original[firstEnd] == '\n' ? "\n"
+                                : original.compare(firstEnd, 2, "\r\n") == 0               ? "\r\n"
+                                                                                           : "\r";
+    std::istringstream in(withLoneCarriageReturnsAsLineFeeds(original));
     const auto trimmed = [](const std::string& s) {
         const auto a = s.find_first_not_of(" \t\r"), b = s.find_last_not_of(" \t\r");
         return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
@@ -92,12 +101,8 @@ void rewriteLumpedSection(const std::string& path, const std::string& comment,
     std::string line;
     bool inLumped = false, beforeSections = true;
     const auto fitted = [&](const std::string& key) { return std::any_of(keys.begin(), keys.end(), [&](const auto& k) { return k.first == key; }); };
-    bool crlf = false;  // a file written on Windows keeps its line ends: mixed ones confuse editors and diffs
-    for (bool first = true; std::getline(in, line); first = false) {
-        if (!line.empty() && line.back() == '\r') {
-            crlf = crlf || first;
-            line.pop_back();
-        }
+    while (std::getline(in, line)) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
         const std::string t = trimmed(line);
         const auto eq = t.find('=');
         const std::string key = eq == std::string::npos ? std::string() : trimmed(t.substr(0, eq));
@@ -125,8 +130,8 @@ void rewriteLumpedSection(const std::string& path, const std::string& comment,
     for (const auto& [key, value] : keys) section << key << " = " << value << '\n';
     std::ofstream out(path + ".tmp", std::ios::binary);
     for (const char c : section.str()) {
-        if (c == '\n' && crlf) out << '\r';
-        out << c;
+        if (c == '\n') out << lineEnd;
+        else out << c;
     }
     out.close();
     if (!out || std::rename((path + ".tmp").c_str(), path.c_str()) != 0)

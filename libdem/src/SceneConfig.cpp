@@ -14,6 +14,7 @@
 #include "libdem/OptionErrorMessage.hpp"
 #include "libdem/StemParameterSet.hpp"
 #include "libcommon/InputError.hpp"
+#include "libcommon/LineEnds.hpp"
 
 namespace sylva::dem {
 
@@ -295,14 +296,15 @@ std::string overridesAsIni(const std::vector<std::string>& overrides) {
     return top + sections;
 }
 
-// The scene file's text, a UTF-8 byte-order mark (which some editors write) removed.
+// The scene file's text, a UTF-8 byte-order mark (which some editors write) removed, its lines ended
+// by line feeds (LineEnds.hpp).
 std::string sceneText(const std::string& path) {
     if (std::filesystem::is_directory(path)) throw InputError(path, 0, "is a folder, not a scene file");
     std::ifstream in(path);
     if (!in) throw InputError(path, 0, "cannot open scene file");
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
-    return text;
+    return withLoneCarriageReturnsAsLineFeeds(std::move(text));
 }
 
 // The line of the file holding `content` (its spaces trimmed), 0 if none: program_options names an

@@ -69,7 +69,9 @@ TEST(CliHelp, AConfigFileRefusalNamesItsLine) {
                                      {"runs = 5\nthreads = two\n", ":2:"},
                                      {"runs = 5\n\nrun = 6\n", ":3:"},
                                      // Boost refuses the unknown key before it reads any value.
-                                     {"seed = x\nruns = 5\nbogus = 1\n", ":3: unrecognised option 'bogus'"}}) {
+                                     {"seed = x\nruns = 5\nbogus = 1\n", ":3: unrecognised option 'bogus'"},
+                                     // Lines ended by a carriage return alone are lines.
+                                     {"runs = 5\rthreads = two\r", ":2:"}}) {
         std::ofstream(path) << text;
         const auto r = runCli("simulate --scene data/scenes/no-forest.ini --config " + path + " --out " +
                               ::testing::TempDir() + "cli_config_refusal");

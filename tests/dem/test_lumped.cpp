@@ -306,10 +306,11 @@ std::string writeText(const std::string& path, const std::string& text) {
 
 // --write sets the fit's keys and keeps the section's others: the fit was made with them, and the
 // scene must give the fitted Dist50 again (they used to be dropped: Dist50 346 m instead of 338.5 m).
-// A scene written on Windows keeps its CRLF line ends (the section was appended with LF ones).
+// A scene written on Windows keeps its CRLF line ends (the section was appended with LF ones), one from
+// an old Mac editor its CR ones.
 TEST(LumpedCalibration, WriteKeepsTheSectionsOtherKeysAndTheFilesLineEnds) {
-    for (const bool crlf : {false, true}) {
-        SCOPED_TRACE(crlf ? "CRLF" : "LF");
+    for (const std::string lineEnd : {"\n", "\r\n", "\r"}) {
+        SCOPED_TRACE(lineEnd == "\n" ? "LF" : lineEnd == "\r" ? "CR" : "CRLF");
         const auto dir = std::filesystem::temp_directory_path() / "sylvarock-calibrate-write";
         std::filesystem::create_directories(dir);
         const std::string runs = (dir / "runs.csv").string(), scene = (dir / "scene.ini").string();
@@ -329,12 +330,13 @@ TEST(LumpedCalibration, WriteKeepsTheSectionsOtherKeysAndTheFilesLineEnds) {
         ASSERT_NE(at, std::string::npos);
         text.erase(at + 1, text.find('\n', at + 1) - at);
         text = "lumped.rg70_m = 0.05\n" + text;
-        if (crlf)
-            for (auto at = text.find('\n'); at != std::string::npos; at = text.find('\n', at + 2)) text.insert(at, "\r");
+        std::string ended;
+        for (const char c : text) ended += c == '\n' ? lineEnd : std::string(1, c);
+        text = ended;
         ASSERT_NO_THROW(loadScene(writeText(scene, text)));
         const auto r = sylva::testing::runCli("calibrate-lumped --scene " + scene + " --dem " + runs + " --runs 200 --write");
         ASSERT_EQ(r.status, 0) << r.output;
-        std::ifstream written(scene);
+        std::ifstream written(scene, std::ios::binary);
         const std::string after((std::istreambuf_iterator<char>(written)), std::istreambuf_iterator<char>());
         for (const char* kept : {"deviation_sd_deg = 8", "tree_reach = centre", "# a note of the user's", "[terrain]"})
             EXPECT_NE(after.find(kept), std::string::npos) << kept << " lost:\n" << after;
@@ -350,10 +352,11 @@ TEST(LumpedCalibration, WriteKeepsTheSectionsOtherKeysAndTheFilesLineEnds) {
         const SceneConfig c = loadScene(scene);
         EXPECT_EQ(c.lumped.treeReach, TreeReach::Centre);
         EXPECT_DOUBLE_EQ(c.lumped.deviationSdDeg, 8);
-        std::size_t lineEnds = 0, crlfEnds = 0;
-        for (std::size_t i = 0; i < after.size(); ++i)
-            if (after[i] == '\n') ++lineEnds, crlfEnds += i > 0 && after[i - 1] == '\r';
-        EXPECT_EQ(crlfEnds, crlf ? lineEnds : 0u) << after;
+        // Every line end is the file's own: as many of its kind as of either character it is made of.
+        const std::size_t ends = count(lineEnd);
+        EXPECT_GT(ends, 30u) << after;
+        EXPECT_EQ(count("\n"), lineEnd == "\r" ? 0u : ends) << after;
+        EXPECT_EQ(count("\r"), lineEnd == "\n" ? 0u : ends) << after;
     }
 }
 

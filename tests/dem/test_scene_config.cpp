@@ -74,6 +74,14 @@ TEST(SceneConfigParser, BadInputNamesTheFileAndTheKey) {
 TEST(SceneConfigParser, ByteOrderMarkIsReadAndABadLineOrAFolderIsNamed) {
     const std::string bom = writeScene("bom.ini", "\xEF\xBB\xBF[soil]\nfriction_deg = 25\n");
     EXPECT_EQ(loadScene(bom).soilContact.frictionDeg, 25);
+    // Lines ended by a carriage return alone (old Mac editors) were one line: the scene named no terrain.
+    EXPECT_EQ(loadScene(writeScene("cr.ini", "[soil]\rfriction_deg = 27\r[block]\rvolume_m3 = 0.7\r")).soilContact.frictionDeg, 27);
+    try {
+        loadScene(writeScene("cr_junk.ini", "[soil]\rfriction_deg = 25\rthis is junk\r"));
+        FAIL() << "a line without '=' was accepted";
+    } catch (const sylva::InputError& e) {
+        EXPECT_EQ(e.line(), 3) << e.what();
+    }
     try {
         loadScene(writeScene("junk.ini", "[soil]\nfriction_deg = 25\nthis is junk\n"));
         FAIL() << "a line without '=' was accepted";

@@ -87,6 +87,19 @@ TEST(ForestReader, AByteOrderMarkBeforeACommentOrTheHeaderIsDropped) {
     }
 }
 
+// Old Mac spreadsheets end lines with a carriage return alone: the whole file was one line, its header
+// taking in the rows ("missing column 'dbh_cm' (header has: x,y,dbh_cm1,2,20...)"). Such line ends, CR LF
+// and LF read alike, and a row's error names its line.
+TEST(ForestReader, LinesEndedByACarriageReturnAloneAreLines) {
+    for (const char* text : {"x,y,dbh_cm\r1,2,20\r3,4,25\r", "x,y,dbh_cm\r\n1,2,20\r\n3,4,25", "x,y,dbh_cm\n1,2,20\n3,4,25\n"}) {
+        const Forest f = readForestCsv(writeText("cr_trees.csv", text));
+        ASSERT_EQ(f.trees.size(), 2u) << text;
+        EXPECT_DOUBLE_EQ(f.trees[1].dbhCm, 25);
+        EXPECT_EQ(f.trees[1].line, 3);
+    }
+    expectRejected("cr_bad.csv", "x,y,dbh_cm\r1,2,20\r1,abc,20\r", 3, "column 'y'");
+}
+
 TEST(ForestReader, GivenHeightSetsTheCrownLength) {
     const Forest f = readForestCsv(writeText("height_only.csv", "x,y,dbh_cm,height_m\n0,0,20,10\n"));
     EXPECT_NEAR(f.trees[0].crownLengthM, 4.0642, 1e-12);  // Eq. 12: 0.40642 * 10 m

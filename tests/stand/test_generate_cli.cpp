@@ -82,6 +82,14 @@ TEST(GenerateCli, BadOptionsExitWithStatusTwoAndSayWhy) {
     r = generate("--structure random --extent 0,0,100,50 --seed -3" + out);
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.output.find("--seed"), std::string::npos) << r.output;
+    // A word is not told of 64-bit seeds that generate would refuse next (it keeps 32 bits).
+    r = generate("--structure random --extent 0,0,100,50 --seed abc" + out);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("--seed 'abc': a seed is a whole number (0, 1, 2, ...)"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("18446744073709551615"), std::string::npos) << r.output;
+    r = generate("--structure random --extent 0,0,100,50 --seed 18446744073709551616" + out);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("a seed is at most 18446744073709551615"), std::string::npos) << r.output;
     // GSL keeps 32 bits of a seed: 4294967297 would draw seed 1's forest, and the second forest from
     // 4294967295 seed 0's.
     for (const char* seeds : {"--seed 4294967297", "--seed 4294967295 --realisations 2"}) {

@@ -65,6 +65,22 @@ void requireDtmCrs(OGRLayer& layer, const std::string& path, const Dtm& dtm) {
                                       crsName(dtm.grid.crsWkt) + ": reproject it (ogr2ogr -t_srs) to the DTM's CRS");
 }
 
+bool namesNoCrs(const std::string& path) {
+    initGdal();
+    CPLErrorReset();
+    const GDALDatasetUniquePtr ds(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_VECTOR | GDAL_OF_READONLY));
+    CPLErrorReset();
+    if (!ds) return false;
+    if (ds->GetRasterCount() > 0) return ds->GetSpatialRef() == nullptr;
+    bool layers = false;
+    for (OGRLayer* layer : ds->GetLayers()) {
+        if (layer->GetGeomType() == wkbNone) continue;
+        if (layer->GetSpatialRef()) return false;
+        layers = true;
+    }
+    return layers;
+}
+
 std::string geometriesHeld(GDALDataset& ds) {
     std::map<std::string, long> count;
     bool collection = false;

@@ -36,6 +36,11 @@ GDALDatasetUniquePtr openVectorUnlessRaster(const std::string& path);
 // degrees, it was written in a projected CRS without saying which, and is taken to be in the DTM's.
 void requireDtmCrs(OGRLayer& layer, const std::string& path, const Dtm& dtm);
 
+// Whether the raster or vector file at `path` names no CRS (a Shapefile without its .prj, an ESRI ASCII
+// grid without its .prj): its coordinates are then taken in the DTM's CRS, unchecked. False for a file
+// GDAL cannot open (its reader says why) and for a layer-less one.
+bool namesNoCrs(const std::string& path);
+
 // What a vector file holds, for an error saying the file holds none of what was asked: "it holds 3
 // Point and 1 Geometry Collection features" (a collection's parts: ogr2ogr -explodecollections), or
 // "it holds no feature with a geometry". Reads every layer from its start.

@@ -320,6 +320,11 @@ HazardResults runHazard(const HazardOptions& o) {
                                            "whole DTM: fill them (gdal_fillnodata.py) or crop the DTM to where it has heights (gdalwarp -te)");
     if (dtm.grid.crsWkt.empty() && o.onNote)
         o.onNote(o.dtmPath + " names no CRS: the release, trees, stands and maps are taken in its coordinates as they are, unchecked");
+    // A layer without a CRS beside a DTM with one is taken in the DTM's, as CSV trees are: unchecked.
+    if (!dtm.grid.crsWkt.empty() && o.onNote)
+        for (const std::string& layer : {o.releasePath, o.checkLinesPath, o.soilMapPath, o.standsPath, o.treesPath})
+            if (!layer.empty() && namesNoCrs(layer))
+                o.onNote(layer + " names no CRS: taken in the DTM's (" + crsName(dtm.grid.crsWkt) + "), unchecked");
     bool releaseBeyond = false;
     const std::vector<ReleaseCell> cells = readReleaseCells(o.releasePath, dtm, &releaseBeyond);
     if (releaseBeyond && o.onNote)

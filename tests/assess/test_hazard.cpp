@@ -646,6 +646,28 @@ TEST_F(Hazard, AReleasePointInTheSceneIsSaidToBeReplaced) {
     EXPECT_EQ(notesOf({}, "none"), 0);
 }
 
+// A layer naming no CRS (an ESRI ASCII release grid without its .prj, a Shapefile without its .prj)
+// beside a DTM that names one is taken in the DTM's CRS, unchecked: said, as it is of a DTM without one.
+TEST_F(Hazard, ALayerWithoutACrsBesideADtmWithOneIsSaidToBeUnchecked) {
+    HazardOptions o = bareSlopeWithVolumes(1, "1", "crs");
+    o.dtmPath = dtm("slope_l93.asc", 60, 20, 5.0, 0, 0, [](int c, int) { return 300.0 - 5 * c * std::tan(0.6 - 0.004 * c); }, true);
+    const auto notesOn = [&](bool prj, const std::string& out) {
+        const std::string grid = "ncols 6\nnrows 4\nxllcorner 0\nyllcorner 0\ncellsize 25\n0 0 0 0 0 0\n0 0 0 0 0 0\n0 1 0 0 0 0\n0 0 0 0 0 0\n";
+        const std::string name = prj ? "release_l93" : "release_bare";
+        o.releasePath = write(name + ".asc", grid);
+        if (prj) write(name + ".prj", kLambert93Prj);
+        o.outDir = (dir_ / out).string();
+        std::vector<std::string> notes;
+        o.onNote = [&notes](const std::string& n) { notes.push_back(n); };
+        runHazard(o);
+        return std::count_if(notes.begin(), notes.end(), [&](const std::string& n) {
+            return n.find(o.releasePath + " names no CRS: taken in the DTM's (RGF93 v1 / Lambert-93), unchecked") != std::string::npos;
+        });
+    };
+    EXPECT_EQ(notesOn(false, "crs_none"), 1);
+    EXPECT_EQ(notesOn(true, "crs_l93"), 0);
+}
+
 // A resumed map records the build that made its runs; a resume by another build says so (the runs it
 // keeps may not be the runs this build makes), and by the same build says nothing.
 TEST_F(Hazard, AResumeByAnotherBuildIsSaid) {

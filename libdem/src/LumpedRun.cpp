@@ -7,6 +7,7 @@
 #include "libdem/LumpedRebound.hpp"
 #include "libdem/LumpedTreeImpact.hpp"
 #include "libdem/SurfacePath.hpp"
+#include "libcommon/InputError.hpp"
 #include "libcommon/SeededRandom.hpp"
 
 namespace sylva::dem {
@@ -80,6 +81,14 @@ RunResult simulateLumped(const Scene& scene, int run, std::uint64_t seed, const 
     bool landed = false;
     std::vector<std::uint32_t> near, hitTrees;
     auto clearance = [&](const Vec3& q) { return q.z() - radius - ground.height(q.x(), q.y()); };
+    // A block starting in the ground landed at once and stopped: a run-out of 0 m, reported as a rest
+    // (the DEM refuses such a release; a block of 520 m^3 has a radius of 5 m, the default fall height).
+    if (const double c = clearance(p); c <= 0) {
+        const auto cm = [](double v) { return readableNumber(std::round(v * 100) / 100); };  // to the centimetre
+        throw InputError(cfg.sourceFile, 0, "the block is released inside the ground at (" + cm(p.x()) + ", " + cm(p.y()) + ", " +
+                                                cm(p.z()) + "): its sphere of " + cm(radius) + " m radius reaches " + cm(-c) +
+                                                " m below the surface: raise release.fall_height_m (or give a smaller block)");
+    }
     auto at = [&](double s) { return Vec3(p + v * s + 0.5 * gravity * s * s); };
     auto record = [&] {
         if (options.recordTrajectory)

@@ -44,6 +44,25 @@ TEST(LumpedRun, FallsFreelyAndStopsOnASoilThatTakesEverything) {
     EXPECT_NEAR(r.energyLineDeg, 90, 1e-9);
 }
 
+// A block whose sphere (of the block's volume) reaches into the ground at its release landed at once: a
+// run-out of 0 m reported as a rest, where the DEM refuses the release. Refused alike, at its depth.
+TEST(LumpedRun, ABlockReleasedInsideTheGroundIsRefused) {
+    const auto sceneWith = [](const std::string& fallHeight) {
+        return Scene(sceneFromOverrides({"terrain.profile=" + std::string(SYLVAROCK_DATA) + "/slopes/flat.csv", "terrain.width_m=20",
+                                         "release.x_m=30", "release.y_m=10", "release.fall_height_m=" + fallHeight}));
+    };
+    // The 0.5 m^3 sphere's radius is 0.49 m: released 0.4 m up, its centre stands 0.4 m above the ground.
+    try {
+        simulateLumped(sceneWith("0.4"), 0, 1);
+        FAIL() << "a block released inside the ground ran";
+    } catch (const sylva::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("the block is released inside the ground at (30, 10, 0.4): its sphere of 0.49 m radius "
+                                             "reaches 0.09 m below the surface: raise release.fall_height_m"),
+                  std::string::npos) << e.what();
+    }
+    EXPECT_GT(simulateLumped(sceneWith("0.6"), 0, 1).duration, 0);
+}
+
 // v = (3, 0, -4) on flat ground, no deviation: the tangential part comes back as R_t = 1/(1 + h/R)
 // times itself, the normal part reversed and scaled by R_n drawn in the soil type's range (talus:
 // 0.38 +- 0.04); over 20 000 rebounds the mean R_n is the type's mean (uniform draws: standard error

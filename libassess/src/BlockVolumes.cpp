@@ -1,5 +1,6 @@
 #include "libassess/BlockVolumes.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -32,6 +33,20 @@ std::vector<BlockVolumeClass> parseBlockVolumes(const std::string& text) {
         classes.push_back(c);
     }
     if (classes.empty()) throw InputError("--block-volumes: empty list (expected V1,V2,... or V1:W1,V2:W2,...)");
+    // std::getline drops an empty last item: "1," would read as "1".
+    if (text.back() == ',') throw InputError("--block-volumes '" + text + "': an empty item after the last comma");
+    // Weights on some classes and not others mean nothing clear; the mix is also what a decimal comma
+    // gives ("2,5:1" for 2.5 m3 of weight 1 read as 2 m3 and 5 m3).
+    const std::size_t weighted = std::count(text.begin(), text.end(), ':');
+    if (weighted > 0 && weighted < classes.size())
+        throw InputError("--block-volumes '" + text + "': " + std::to_string(weighted) + " of the " + std::to_string(classes.size()) +
+                         " classes have a weight: give every class one (V1:W1,V2:W2,...) or none (V1,V2,...); decimals take a point, "
+                         "2.5 not 2,5");
+    for (std::size_t i = 0; i < classes.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (classes[i].volumeM3 == classes[j].volumeM3)
+                throw InputError("--block-volumes '" + text + "': the volume " + readableNumber(classes[i].volumeM3) +
+                                 " m3 is listed twice: give each class once, with a weight (V:W) for its share");
     // The shares are the weights over their sum, which must not overflow.
     double total = 0;
     for (const auto& c : classes) total += c.weight;

@@ -612,6 +612,12 @@ TEST_F(Hazard, BlockVolumesAreAListOfVolumesWithOptionalWeights) {
     EXPECT_NE(errorOf([] { parseBlockVolumes("1m3"); }).find("volume '1m3' is not a number"), std::string::npos);
     EXPECT_NE(errorOf([] { parseBlockVolumes(""); }).find("empty list"), std::string::npos);
     EXPECT_NE(errorOf([] { parseBlockVolumes("0.2:1e308,1:1e308"); }).find("the weights' sum overflows"), std::string::npos);
+    // A decimal comma ("2,5:1" for 2.5 m3 of weight 1) ran as two classes, 2 and 5 m3: weights on some
+    // classes only are refused; so are a trailing comma ("1," ran as "1") and a volume listed twice.
+    EXPECT_NE(errorOf([] { parseBlockVolumes("2,5:1"); }).find("1 of the 2 classes have a weight: give every class one"), std::string::npos)
+        << errorOf([] { parseBlockVolumes("2,5:1"); });
+    EXPECT_NE(errorOf([] { parseBlockVolumes("1,"); }).find("an empty item after the last comma"), std::string::npos);
+    EXPECT_NE(errorOf([] { parseBlockVolumes("0.5,0.5"); }).find("the volume 0.5 m3 is listed twice"), std::string::npos);
 }
 
 // Each block draws its volume class from its own stream: the classes' shares follow the weights

@@ -179,6 +179,13 @@ TEST_F(AssessCli, BadInputsAreClearErrors) {
     EXPECT_NE(err_.find("--model 'rf3d': expected dem"), std::string::npos) << err_;
     EXPECT_EQ(run(smallCampaign("o") + " --model both --lumped-runs 0"), 2);
     EXPECT_NE(err_.find("--lumped-runs must be at least 1"), std::string::npos) << err_;
+    // A count for a model the campaign does not run was passed over: --runs 4 with --model lumped ran
+    // its 2 000 runs a forest without a word.
+    EXPECT_EQ(run(smallCampaign("o") + " --model lumped"), 2);
+    EXPECT_NE(err_.find("--runs counts the DEM's runs, which --model lumped does not make: give --lumped-runs"), std::string::npos) << err_;
+    EXPECT_EQ(run(smallCampaign("o") + " --lumped-baseline-runs 50"), 2);
+    EXPECT_NE(err_.find("--lumped-baseline-runs counts the lumped model's runs, which --model dem does not make: give --baseline-runs"),
+              std::string::npos) << err_;
     EXPECT_EQ(run(smallCampaign("o", 1000000000)), 2);
     EXPECT_NE(err_.find("--runs 1000000000 is above 10000000: a typo?"), std::string::npos) << err_;
     // A stem thinner than the stems' tip diameter (1 cm) cannot be built: named by its inventory line

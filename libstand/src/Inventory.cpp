@@ -89,6 +89,16 @@ double readDbhCell(const CsvTable& t, std::size_t row, std::size_t column) {
     return dbh;
 }
 
+void requireOnePlot(const CsvTable& table, const std::string& instead) {
+    const auto plot = table.index("plot");
+    if (!plot) return;
+    for (std::size_t r = 1; r < table.rows(); ++r)
+        if (table.text(r, *plot) != table.text(0, *plot))
+            table.fail(r, *plot, "plot '" + table.text(r, *plot) + "' after plot '" + table.text(0, *plot) + "' of line " +
+                                     std::to_string(table.lineOf(0)) + ": an inventory's stems file, each plot in its own frame, read as one "
+                                     "frame would stack its plots on one another; " + instead);
+}
+
 std::vector<std::string> dataWarnings(const Inventory& inv, const std::string& stemsSource,
                                       const std::string& plotsSource) {
     std::vector<std::string> warnings;

@@ -100,6 +100,13 @@ TEST(ForestReader, LinesEndedByACarriageReturnAloneAreLines) {
     expectRejected("cr_bad.csv", "x,y,dbh_cm\r1,2,20\r1,abc,20\r", 3, "column 'y'");
 }
 
+// An inventory's stems file given as a forest stacked its plots in one frame; one plot's is a forest.
+TEST(ForestReader, AStemsFileOfSeveralPlotsIsRefused) {
+    expectRejected("two_plots.csv", "plot,stem,x,y,dbh_cm,species,stool\n1,1,2,3,20,beech,\n1,2,8,3,25,beech,\n2,3,2,3,30,oak,\n", 4,
+                   "plot '2' after plot '1' of line 2: an inventory's stems file");
+    EXPECT_EQ(readForestCsv(writeText("one_plot.csv", "plot,stem,x,y,dbh_cm\n1,1,2,3,20\n1,2,8,3,25\n")).trees.size(), 2u);
+}
+
 TEST(ForestReader, GivenHeightSetsTheCrownLength) {
     const Forest f = readForestCsv(writeText("height_only.csv", "x,y,dbh_cm,height_m\n0,0,20,10\n"));
     EXPECT_NEAR(f.trees[0].crownLengthM, 4.0642, 1e-12);  // Eq. 12: 0.40642 * 10 m

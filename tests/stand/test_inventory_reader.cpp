@@ -150,6 +150,17 @@ TEST(PointPatternReader, PointOutsideTheWindow) {
     EXPECT_NE(f.message.find("outside the window"), std::string::npos) << f.message;
 }
 
+// An inventory's stems file read as one pattern stacked its plots in one frame (GR1's 8 plots gave
+// 9 376 stems/ha for 1 172): refused at the first stem of a second plot. One plot's file is one frame.
+TEST(PointPatternReader, AStemsFileOfSeveralPlotsIsRefused) {
+    const Failure f = failureOf([] { readPointPattern(data("stems_ok.csv"), Window::rectangle(0, 0, 20, 20)); });
+    EXPECT_EQ(f.line, 5);
+    EXPECT_NE(f.message.find("plot '2' after plot '1' of line 2: an inventory's stems file, each plot in its own frame"), std::string::npos)
+        << f.message;
+    EXPECT_NE(f.message.find("--stems S --plots P"), std::string::npos) << f.message;
+    EXPECT_EQ(readPointPattern(data("stems_identical_positions.csv"), Window::rectangle(0, 0, 50, 50)).stems.size(), 3u);
+}
+
 TEST(PointPatternReader, MissingCoordinateColumn) {
     const Failure f = failureOf([] { readPointPattern(data("points_missing_y.csv"), Window::rectangle(0, 0, 10, 10)); });
     EXPECT_NE(f.message.find("missing column 'y'"), std::string::npos) << f.message;

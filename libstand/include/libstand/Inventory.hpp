@@ -42,6 +42,11 @@ inline bool measured(const Stem& s) { return s.dbhCm > 0; }
 // 0: a stem below breast height. Throws InputError (file, line) for anything else.
 double readDbhCell(const CsvTable& table, std::size_t row, std::size_t column);
 
+// For readers of one frame of x, y (a forest, a point pattern): an inventory's stems file, whose column
+// `plot` names several plots each in its own frame, would stack its plots on one another. Throws
+// InputError at the first stem of a second plot, saying to give it with its plots file (`instead`).
+void requireOnePlot(const CsvTable& table, const std::string& instead);
+
 // Reads `plot,stem,x,y,dbh_cm,species,stool` stems and a plots file with either
 // `plot,xmin,ymin,xmax,ymax` or `plot,wkt` (a WKT POLYGON per plot). Throws InputError naming the
 // file, the line and the problem for: a missing column, a non-numeric or negative diameter, a

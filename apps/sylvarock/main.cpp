@@ -1,5 +1,6 @@
 // sylvarock: one executable, one subcommand per task (see Cli.hpp for how they register).
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
@@ -42,7 +43,14 @@ int main(int argc, char** argv) {
                                                       "sylvarock " + c.name + " does not spread over MPI ranks: run it "
                                                       "without mpirun (sylvarock assess does)"))
                                                 : nullptr);
-            return c.run(argc - 1, argv + 1);
+            const int status = c.run(argc - 1, argv + 1);
+            // Results printed to a full disk (stats --json > results.json) were lost with exit 0.
+            std::cout.flush();
+            if (!std::cout || std::fflush(stdout) != 0 || std::ferror(stdout)) {
+                std::cerr << "sylvarock " << c.name << ": error: cannot write the standard output (a full disk?): what it printed is incomplete\n";
+                return status == 0 ? 2 : status;
+            }
+            return status;
         } catch (const sylva::assess::PeerFailed&) {
             return 0;
         } catch (const sylva::InputError& e) {

@@ -162,6 +162,16 @@ TEST(StatsCli, BadInputExitsWithFileAndLine) {
     EXPECT_TRUE(r.out.empty());
 }
 
+// Results printed to a full disk were lost with exit 0 (stats --json > results.json): the write's
+// failure is an error (/dev/full fails every write, as a full disk does).
+TEST(StatsCli, AnUnwritableStandardOutputIsAnError) {
+    const std::string err = ::testing::TempDir() + "/stats_cli_full_err.txt";
+    const int rc = std::system((std::string(SYLVAROCK_CLI) + " stats --stems " + stand("GR1_stems.csv") + " --plots " +
+                                stand("GR1_plots.csv") + " --json >/dev/full 2>" + err).c_str());
+    EXPECT_EQ(WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, 2);
+    EXPECT_NE(slurp(err).find("sylvarock stats: error: cannot write the standard output"), std::string::npos) << slurp(err);
+}
+
 TEST(StatsCli, InconsistentOptionsExit2) {
     EXPECT_EQ(stats("--points " + data("points_ok.csv")).status, 2);
     EXPECT_EQ(stats("--stems " + data("stems_ok.csv")).status, 2);

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include "libcommon/InputError.hpp"
 #include "libcommon/LineEnds.hpp"
@@ -82,6 +83,15 @@ CsvTable CsvTable::parse(const std::string& text, const std::string& sourceName)
                     if (cells[j] == cells[i])
                         throw InputError(sourceName, lineNo, "column '" + cells[i] + "' appears twice in the header");
             }
+            // A European spreadsheet's "CSV" separates fields with ';' (its decimals taking the comma), a
+            // tab-separated export with tabs: read with commas, the header was one column and the
+            // errors spoke of missing columns that the header visibly held.
+            if (cells.size() == 1)
+                for (const auto& [separator, name] : {std::pair{';', "';'"}, {'\t', "tabs"}})
+                    if (cells[0].find(separator) != std::string::npos)
+                        throw InputError(sourceName, lineNo, "the header '" + cells[0] + "' is one column: its fields are separated by " + name +
+                                                                 ", sylvarock's by commas (and decimals take a point): save the table as "
+                                                                 "comma-separated CSV");
             t.header_ = std::move(cells);
             t.headerLine_ = lineNo;
             haveHeader = true;

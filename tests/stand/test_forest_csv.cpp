@@ -100,6 +100,13 @@ TEST(ForestReader, LinesEndedByACarriageReturnAloneAreLines) {
     expectRejected("cr_bad.csv", "x,y,dbh_cm\r1,2,20\r1,abc,20\r", 3, "column 'y'");
 }
 
+// A European spreadsheet's ';'-separated export (decimal commas) and a tab-separated one: the header
+// read as one column gave "missing column 'x' (header has: x;y;dbh_cm)". The separator is named.
+TEST(ForestReader, SemicolonOrTabSeparatedFilesAreNamedSo) {
+    expectRejected("semicolons.csv", "x;y;dbh_cm\n925300,5;6460100,2;20,5\n", 1, "the header 'x;y;dbh_cm' is one column: its fields are separated by ';'");
+    expectRejected("tabs.csv", "x\ty\tdbh_cm\n1\t2\t20\n", 1, "its fields are separated by tabs, sylvarock's by commas");
+}
+
 // An inventory's stems file given as a forest stacked its plots in one frame; one plot's is a forest.
 TEST(ForestReader, AStemsFileOfSeveralPlotsIsRefused) {
     expectRejected("two_plots.csv", "plot,stem,x,y,dbh_cm,species,stool\n1,1,2,3,20,beech,\n1,2,8,3,25,beech,\n2,3,2,3,30,oak,\n", 4,

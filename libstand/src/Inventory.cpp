@@ -27,9 +27,18 @@ std::string standName(const std::string& stemsCsv) {
 std::vector<Plot> readPlots(const std::string& path) {
     const CsvTable t = CsvTable::read(path);
     const std::size_t cPlot = t.require("plot");
+    // Two geometries for one plot: one of them was used, the other passed over without a word, so
+    // that two which disagree (0.25 ha and 1 ha) gave one plot's area unsaid.
     std::optional<std::size_t> cWkt;
     for (const char* name : {"wkt", "window", "geometry"})
-        if (!cWkt) cWkt = t.index(name);
+        if (const auto c = t.index(name)) {
+            if (cWkt) throw InputError(path, t.headerLine(), "two WKT columns, '" + t.header()[*cWkt] + "' and '" + name + "': give one");
+            cWkt = c;
+        }
+    for (const char* corner : {"xmin", "ymin", "xmax", "ymax"})
+        if (cWkt && t.has(corner))
+            throw InputError(path, t.headerLine(), "both a WKT column '" + t.header()[*cWkt] + "' and a rectangle's column '" + corner +
+                                                       "': give each plot's window one way (xmin,ymin,xmax,ymax or WKT)");
     if (!cWkt && !t.has("xmin") && !t.has("ymin") && !t.has("xmax") && !t.has("ymax")) {
         std::string have;
         for (const auto& h : t.header()) have += (have.empty() ? "" : ",") + h;

@@ -100,6 +100,10 @@ TEST(InventoryReader, DiameterInMillimetres) { expectBadStems("stems_dbh_in_mm.c
 TEST(InventoryReader, StemOutsideItsPlot) { expectBadStems("stems_outside_plot.csv", 3, "lies outside its plot '2'"); }
 TEST(InventoryReader, DuplicateStemId) { expectBadStems("stems_duplicate_id.csv", 4, "duplicate stem id '1' (also on line 2)"); }
 TEST(InventoryReader, StemOfPlotWithoutWindow) { expectBadStems("stems_unknown_plot.csv", 3, "plot '3' has no window"); }
+// A rectangle and a WKT polygon for each plot that disagree (0.04 ha and 0.16 ha): the WKT was used unsaid.
+TEST(InventoryReader, PlotsGivenBothAsRectanglesAndWkt) {
+    expectBadPlots("plots_box_and_wkt.csv", 1, "both a WKT column 'wkt' and a rectangle's column 'xmin': give each plot's window one way");
+}
 TEST(InventoryReader, DegenerateWindow) { expectBadPlots("plots_degenerate.csv", 3, "degenerate window"); }
 TEST(InventoryReader, PlotOfAMicroSquareMetre) { expectBadPlots("plots_tiny.csv", 3, "window of 5e-09 m2 is outside [1, 1e10] m2"); }
 TEST(InventoryReader, DuplicatePlotId) { expectBadPlots("plots_duplicate_id.csv", 3, "duplicate plot id '1'"); }

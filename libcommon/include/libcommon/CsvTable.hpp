@@ -32,6 +32,7 @@ public:
     [[noreturn]] void fail(std::size_t row, const std::string& message) const;
 
     const std::vector<std::string>& header() const { return header_; }
+    long headerLine() const { return headerLine_; }  // after any comment lines
 
 private:
     std::string source_;

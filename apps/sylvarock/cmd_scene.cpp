@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "Cli.hpp"
+#include "libdem/BlockMotion.hpp"
 #include "libdem/Campaign.hpp"
 #include "libdem/SoilContact.hpp"
 #include "libdem/Stem.hpp"
@@ -61,10 +62,13 @@ void writeRelease(const std::string& path, const dem::Scene& scene, const dem::R
     const dem::Vec3& p = release.position;
     const dem::Vec3& inertia = block.principalInertia();
     const dem::SoilBed& soil = scene.soil();
-    rel << std::setprecision(12) << "x,y,z,qw,qx,qy,qz,mass_kg,ixx_kg_m2,iyy_kg_m2,izz_kg_m2,xmin,xmax,ymin,ymax\n"
-        << p.x() << ',' << p.y() << ',' << p.z() << ',' << q.w() << ',' << q.x() << ',' << q.y() << ',' << q.z() << ','
-        << block.mass() << ',' << inertia.x() << ',' << inertia.y() << ',' << inertia.z() << ',' << soil.xmin() << ','
-        << soil.xmax() << ',' << soil.ymin() << ',' << soil.ymax() << '\n';
+    // The velocity is a single-tree launch's (block.speed_m_s), zero for a release from rest: without
+    // it another code dropped the launched block from rest.
+    const dem::Vec3& v = release.velocity;
+    rel << std::setprecision(12) << "x,y,z,qw,qx,qy,qz,vx_m_s,vy_m_s,vz_m_s,mass_kg,ixx_kg_m2,iyy_kg_m2,izz_kg_m2,xmin,xmax,ymin,ymax\n"
+        << p.x() << ',' << p.y() << ',' << p.z() << ',' << q.w() << ',' << q.x() << ',' << q.y() << ',' << q.z() << ',' << v.x()
+        << ',' << v.y() << ',' << v.z() << ',' << block.mass() << ',' << inertia.x() << ',' << inertia.y() << ',' << inertia.z()
+        << ',' << soil.xmin() << ',' << soil.xmax() << ',' << soil.ymin() << ',' << soil.ymax() << '\n';
     if (!rel) throw InputError(path, 0, "write failed (disk full?)");
 }
 
@@ -100,7 +104,7 @@ int runScene(int argc, const char* const* argv) {
                "  sylvarock scene export --scene data/scenes/single-tree.ini --set tree.dbh_cm=30 --out out/tree\n"
                "  sylvarock scene export --scene data/scenes/no-forest.ini --seed 4 --run 7 --out out/run7\n"
                "writes soil_spheres.csv (x,y,z,r), block_spheres.csv (body frame: x,y,z,r), release.csv (the\n"
-               "block's centre, orientation, mass and principal inertia at the release of run --run of campaign\n"
+               "block's centre, orientation, velocity, mass and principal inertia at the release of run --run of campaign\n"
                "--seed, and the domain it stops on leaving), soil_contact.csv (Eqs. 14-19: K_n, K_t, alpha,\n"
                "phi, gravity; the block/soil law as simulate applies it, for another DEM code) and\n"
                "stems.csv: every stem of the forest (forest.file or --forest) or of the single tree (tree.* keys)\n"
@@ -121,6 +125,9 @@ int runScene(int argc, const char* const* argv) {
     const dem::Scene scene(dem::loadScene(vm["scene"].as<std::string>(), sets));
     // Every input error before the first file: a refused release left the soil and block files written.
     const dem::Release release = dem::drawRelease(scene, dem::runSeed(vm["seed"].as<Seed>().value, run));
+    // The start simulate refuses (the block inside the soil or a stem, a soil too soft to hold it) is
+    // refused here too: the files would hand another code a run that cannot be made.
+    const dem::BlockMotion start(scene, release);
     std::filesystem::create_directories(out);
     scene.soil().writeCsv(out + "/soil_spheres.csv");
     std::ofstream block(out + "/block_spheres.csv");

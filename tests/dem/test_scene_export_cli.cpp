@@ -195,5 +195,21 @@ TEST(SceneExportCli, WritesTheReleaseOfTheRunAskedAndTheBlockSoilLaw) {
     EXPECT_EQ(outside.status, 2) << outside.output;
     EXPECT_NE(outside.output.find("outside the terrain"), std::string::npos) << outside.output;
     EXPECT_FALSE(std::filesystem::exists(dir / "outside"));
+    // What simulate refuses to start is refused too: the block inside the soil, a soil too soft to hold it.
+    for (const char* start : {"--set release.fall_height_m=0.1", "--set soil.kn_n_m=1000"}) {
+        const CliRun refused = sceneExport(common + start + " --out " + (dir / "unstartable").string());
+        EXPECT_EQ(refused.status, 2) << start << "\n" << refused.output;
+        EXPECT_NE(refused.output.find(std::string(start).find("fall") != std::string::npos ? "released inside the soil" : "more than a soil sphere's radius"),
+                  std::string::npos) << refused.output;
+        EXPECT_FALSE(std::filesystem::exists(dir / "unstartable"));
+    }
+    // A single-tree launch's velocity goes with the release (another code dropped the block from rest).
+    EXPECT_EQ(r0.at("vx_m_s"), 0);
+    ASSERT_EQ(sceneExport("--scene " + std::string(SYLVAROCK_DATA) + "/scenes/single-tree.ini --set block.speed_m_s=15 --out " +
+                          (dir / "launch").string()).status, 0);
+    const auto launch = row(dir / "launch/release.csv");
+    EXPECT_EQ(launch.at("vx_m_s"), 15);
+    EXPECT_EQ(launch.at("vy_m_s"), 0);
+    EXPECT_EQ(launch.at("vz_m_s"), 0);
     std::filesystem::remove_all(dir);
 }

@@ -20,6 +20,9 @@ std::string fileLine(const std::string& key, const std::string& path) {
            std::filesystem::absolute(path).lexically_normal().string() + "\n";
 }
 
+// The design's keys whose value is a file's fingerprint (fileLine).
+const std::set<std::string> fileKeys{"scene", "scene_profile", "scene_dtm", "stand_stems", "stand_plots"};
+
 std::vector<std::pair<long, std::string>> significantLines(std::istream& in) {
     std::vector<std::pair<long, std::string>> lines;
     std::string line;
@@ -130,12 +133,24 @@ std::string requireSameDesign(const std::string& storedText, const std::string& 
                                   }),
                    have.end());
     const std::string advice = "; resume with the options of that campaign, or start a new one with another --out";
+    const auto keyOf = [](const std::string& l) { return l.substr(0, l.find(" = ")); };
     for (std::size_t i = 0; i < std::max(have.size(), want.size()); ++i) {
         if (i < have.size() && i < want.size() && have[i].second == want[i].second) continue;
         const long number = i < have.size() ? have[i].first : (have.empty() ? 0 : have.back().first);
-        const std::string was = i < have.size() ? "'" + have[i].second + "'" : "nothing";
-        const std::string now = i < want.size() ? "'" + want[i].second + "'" : "nothing";
-        throw InputError(where + ", design line " + std::to_string(number) + ": the campaign there was started with " + was + ", this one asks for " + now + advice);
+        std::string what;
+        if (i < have.size() && i < want.size() && keyOf(have[i].second) == keyOf(want[i].second)) {
+            what = "the campaign there was started with '" + have[i].second + "', this one asks for '" + want[i].second + "'";
+            // A file's line holds its fingerprint: hexadecimal digits, which say only that it changed.
+            if (fileKeys.count(keyOf(want[i].second))) what += " (the file's contents are not those the campaign began with)";
+        } else if (i < want.size() && !line(want[i].second)) {
+            // A line one design has and the other lacks shifts the rest: named alone, not against its neighbour.
+            what = "this one adds '" + want[i].second + "', which the campaign there was not started with";
+        } else if (i < have.size()) {
+            what = "the campaign there was started with '" + have[i].second + "', which this one lacks";
+        } else {
+            what = "this one adds '" + want[i].second + "'";
+        }
+        throw InputError(where + ", design line " + std::to_string(number) + ": " + what + advice);
     }
     std::istringstream lines(storedText);
     std::vector<std::string> storedLines;

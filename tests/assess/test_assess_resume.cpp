@@ -92,6 +92,37 @@ TEST_F(AssessResume, MismatchedDesignIsRefused) {
     otherSeed.resume = true;
     otherSeed.design.seed = 4;
     EXPECT_THROW(runAssessment(otherSeed), sylva::InputError);
+    // A line one design has and the other lacks is named alone: it was paired with the next line of the
+    // other ("started with 'stem_parameters = calibrated', this one asks for 'scene_set = ...'").
+    const auto refusal = [](const AssessmentOptions& o) {
+        try {
+            runAssessment(o);
+        } catch (const sylva::InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    AssessmentOptions withSet = options("c", 2);
+    withSet.resume = true;
+    withSet.design.sceneOverrides.push_back("soil.friction_deg=35");
+    const std::string added = refusal(withSet);
+    EXPECT_NE(added.find("this one adds 'scene_set = soil.friction_deg=35', which the campaign there was not started with"), std::string::npos)
+        << added;
+    AssessmentOptions both = options("c", 2);
+    both.resume = true;
+    both.design.models.push_back(sylva::dem::Model::Lumped);
+    const std::string model = refusal(both);
+    EXPECT_NE(model.find("this one adds 'model = lumped'"), std::string::npos) << model;
+    // A changed file is said to be one, not left to a pair of fingerprints.
+    AssessmentOptions edited = options("c", 2);
+    edited.resume = true;
+    const auto copy = root_ / "edited_stems.csv";
+    std::filesystem::copy_file(edited.design.stands.front().stemsCsv, copy, std::filesystem::copy_options::overwrite_existing);
+    std::ofstream(copy, std::ios::app) << "# a note\n";
+    edited.design.stands.front().stemsCsv = copy.string();
+    const std::string changed = refusal(edited);
+    EXPECT_NE(changed.find("stand_stems = "), std::string::npos) << changed;
+    EXPECT_NE(changed.find("(the file's contents are not those the campaign began with)"), std::string::npos) << changed;
 }
 
 // A lumped-only campaign recorded the DEM's run counts it never used: its results.json reported

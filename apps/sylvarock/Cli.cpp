@@ -114,10 +114,10 @@ void validate(boost::any& v, const std::vector<std::string>& tokens, Seed*, int)
     errno = 0;
     char* end = nullptr;
     const unsigned long long n = t.empty() || t[0] == '-' || t[0] == '+' ? 0 : std::strtoull(t.c_str(), &end, 10);
-    // The largest seed is not named for a word: commands whose generator keeps fewer bits (generate's
-    // 32) say their own bound, and a user told 2^64 - 1 would be refused again.
+    // No largest seed is named: commands whose generator keeps fewer bits (generate's 32) say their own
+    // bound, and a user told 2^64 - 1 would be refused again.
     if (!end || *end != '\0') throw po::error("--seed '" + t + "': a seed is a whole number (0, 1, 2, ...)");
-    if (errno == ERANGE) throw po::error("--seed '" + t + "': a seed is at most 18446744073709551615");
+    if (errno == ERANGE) throw po::error("--seed '" + t + "': too large a number for a seed");
     v = Seed{static_cast<unsigned long>(n)};
 }
 

@@ -1,6 +1,5 @@
 // sylvarock assess: protection index PF50 of stands from virtual forests and block campaigns, with
 // bootstrap intervals, rankings and correlations (paper Sect. 2.3.3, 3.3; libassess).
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -70,15 +69,15 @@ std::optional<assess::AssessmentOptions> readOptions(int argc, const char* const
     a.design.seed = vm["seed"].as<Seed>().value;
     a.design.models = assess::parseModels(vm["model"].as<std::string>());
     // A count given for a model the campaign does not run was passed over without a word (--runs 5 with
-    // --model lumped ran its 2 000 runs a forest).
-    const bool dem = std::count(a.design.models.begin(), a.design.models.end(), dem::Model::Dem) > 0;
-    const bool lumped = std::count(a.design.models.begin(), a.design.models.end(), dem::Model::Lumped) > 0;
-    for (const auto& [option, runs, whose, counterpart] :
-         {std::tuple{"runs", dem, "the DEM's", "lumped-runs"}, {"baseline-runs", dem, "the DEM's", "lumped-baseline-runs"},
-          {"lumped-runs", lumped, "the lumped model's", "runs"}, {"lumped-baseline-runs", lumped, "the lumped model's", "baseline-runs"}})
-        if (!runs && !vm[option].defaulted())
-            throw InputError("--" + std::string(option) + " counts " + whose + " runs, which --model " + vm["model"].as<std::string>() +
-                             " does not make: give --" + counterpart);
+    // --model lumped ran its 2 000 runs a forest). Said, not refused: a --config file may hold both
+    // models' counts.
+    for (const auto& [option, model, counterpart] :
+         {std::tuple{"runs", dem::Model::Dem, "lumped-runs"}, {"baseline-runs", dem::Model::Dem, "lumped-baseline-runs"},
+          {"lumped-runs", dem::Model::Lumped, "runs"}, {"lumped-baseline-runs", dem::Model::Lumped, "baseline-runs"}})
+        if (!assess::usesModel(a.design, model) && !vm[option].defaulted())
+            std::cerr << "sylvarock assess: warning: --" << option << " counts the " << dem::toString(model) << " model's runs, which --model "
+                      << vm["model"].as<std::string>() << " does not make; its runs are counted by --" << counterpart << " ("
+                      << vm[counterpart].as<int>() << ")\n";
     a.design.lumpedRuns = vm["lumped-runs"].as<int>();
     a.design.lumpedBaselineRuns = vm["lumped-baseline-runs"].as<int>();
     a.outDir = vm["out"].as<std::string>();

@@ -87,10 +87,10 @@ void rewriteLumpedSection(const std::string& path, const std::string& comment,
     const std::string original((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
     // The file keeps its line ends (CR LF from Windows, CR alone from old Mac editors): mixed ones
     // confuse editors and diffs.
-    const std::size_t firstEnd = original.find_first_of("\r\n");
-    const std::string lineEnd = firstEnd == std::string::npos || original[firstEnd] == '\n' ? "\n"
-                                : original.compare(firstEnd, 2, "\r\n") == 0               ? "\r\n"
-                                                                                           : "\r";
+    const std::size_t firstFeed = original.find('\n');
+    const std::string lineEnd = firstFeed == std::string::npos ? (original.find('\r') == std::string::npos ? "\n" : "\r")
+                                : firstFeed > 0 && original[firstFeed - 1] == '\r' ? "\r\n"
+                                                                                   : "\n";
     std::istringstream in(withLoneCarriageReturnsAsLineFeeds(original));
     const auto trimmed = [](const std::string& s) {
         const auto a = s.find_first_not_of(" \t\r"), b = s.find_last_not_of(" \t\r");

@@ -65,10 +65,10 @@ void writeRelease(const std::string& path, const dem::Scene& scene, const dem::R
     // The velocity is a single-tree launch's (block.speed_m_s), zero for a release from rest: without
     // it another code dropped the launched block from rest.
     const dem::Vec3& v = release.velocity;
-    rel << std::setprecision(12) << "x,y,z,qw,qx,qy,qz,vx_m_s,vy_m_s,vz_m_s,mass_kg,ixx_kg_m2,iyy_kg_m2,izz_kg_m2,xmin,xmax,ymin,ymax\n"
-        << p.x() << ',' << p.y() << ',' << p.z() << ',' << q.w() << ',' << q.x() << ',' << q.y() << ',' << q.z() << ',' << v.x()
-        << ',' << v.y() << ',' << v.z() << ',' << block.mass() << ',' << inertia.x() << ',' << inertia.y() << ',' << inertia.z()
-        << ',' << soil.xmin() << ',' << soil.xmax() << ',' << soil.ymin() << ',' << soil.ymax() << '\n';
+    rel << std::setprecision(12) << "x,y,z,qw,qx,qy,qz,mass_kg,ixx_kg_m2,iyy_kg_m2,izz_kg_m2,xmin,xmax,ymin,ymax,vx_m_s,vy_m_s,vz_m_s\n"
+        << p.x() << ',' << p.y() << ',' << p.z() << ',' << q.w() << ',' << q.x() << ',' << q.y() << ',' << q.z() << ','
+        << block.mass() << ',' << inertia.x() << ',' << inertia.y() << ',' << inertia.z() << ',' << soil.xmin() << ','
+        << soil.xmax() << ',' << soil.ymin() << ',' << soil.ymax() << ',' << v.x() << ',' << v.y() << ',' << v.z() << '\n';
     if (!rel) throw InputError(path, 0, "write failed (disk full?)");
 }
 

@@ -388,10 +388,12 @@ HazardResults runHazard(const HazardOptions& o) {
     const auto onSoils = [&soils](dem::Scene s) { return soils ? s.withSoilZones(soils) : s; };
     const dem::Scene scene = onSoils(dem::Scene(config, dtm.elevation, std::move(forest)));
     const BlockVolumeScenes blocks(scene, o.blockVolumes);
-    // A soil too soft for a block would fail every run of its volume alike: said once, before the
-    // output folder is touched.
-    if (o.model == dem::Model::Dem)
-        for (std::size_t k = 0; k < blocks.classes(); ++k) dem::BlockMotion::refuseSoilTooSoft(blocks.scene(k));
+    // A soil too soft for a block, or a lumped block larger than its fall height, would fail every run
+    // of its volume alike: said once, before the output folder is touched.
+    for (std::size_t k = 0; k < blocks.classes(); ++k) {
+        if (o.model == dem::Model::Dem) dem::BlockMotion::refuseSoilTooSoft(blocks.scene(k));
+        else dem::refuseReleaseInsideTheGround(blocks.scene(k));
+    }
     prepareOutDir(o.outDir, o.resume);
     const FolderLock lock(o.outDir, "hazard");  // until the last output is written
     const std::string storePath = o.outDir + "/hazard.sqlite";

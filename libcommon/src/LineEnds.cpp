@@ -3,8 +3,11 @@
 namespace sylva {
 
 std::string withLoneCarriageReturnsAsLineFeeds(std::string text) {
-    for (std::size_t i = 0; i < text.size(); ++i)
-        if (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n')) text[i] = '\n';
+    // Only a file without any line feed: "\r\r\n" (Python's csv module on Windows) is one line end,
+    // whose carriage returns the readers trim, not a line and a blank one.
+    if (text.find('\n') != std::string::npos) return text;
+    for (char& c : text)
+        if (c == '\r') c = '\n';
     return text;
 }
 

@@ -13,6 +13,11 @@
 namespace sylva::dem {
 namespace {
 
+// The sphere of the block's volume: the lumped model's block.
+double sphereRadius(const Scene& scene) {
+    return std::cbrt(3 * scene.blockTemplate().mass() / (4 * M_PI * scene.config().block.densityKgM3));
+}
+
 // The macroscopic surface under the sphere. Its normal is the slope over `baseline`, as a DTM of
 // that resolution sees it (Table 1: 2 m), so that the rebound does not follow every kink of a profile.
 class Ground {
@@ -57,12 +62,20 @@ struct TreeHit {
 
 }  // namespace
 
+void refuseReleaseInsideTheGround(const Scene& scene) {
+    const double radius = sphereRadius(scene), fall = scene.config().release.fallHeight;
+    if (fall <= radius)
+        throw InputError(scene.config().sourceFile, 0, "the lumped model's block, a sphere of " + readableNumber(std::round(radius * 100) / 100) +
+                                                           " m radius (its volume), would start inside the ground at every release: "
+                                                           "release.fall_height_m (" + readableNumber(fall) + " m) must exceed it");
+}
+
 RunResult simulateLumped(const Scene& scene, int run, std::uint64_t seed, const RunOptions& options) {
     const SceneConfig& cfg = scene.config();
     const LumpedParams& lp = cfg.lumped;
     const SoilBed& soil = scene.soil();
     const double mass = scene.blockTemplate().mass();
-    const double radius = std::cbrt(3 * mass / (4 * M_PI * cfg.block.densityKgM3));  // the sphere of the block's volume
+    const double radius = sphereRadius(scene);
     const Vec3 gravity(0, 0, -cfg.gravity);
     const Ground ground(soil, lp.slopeBaseline);
     const LumpedRebound rebound(lp, radius);

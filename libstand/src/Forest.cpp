@@ -49,7 +49,7 @@ void writeForestCsv(const std::string& path, const Forest& forest) {
 Forest readForestCsv(const std::string& path) {
     const CsvTable t = CsvTable::read(path);
     const std::size_t cx = t.require("x"), cy = t.require("y"), cd = t.require("dbh_cm");
-    requireOnePlot(t, "make a forest from it with its plots (sylvarock generate --stems S --plots P)");
+    requireOnePlot(t, cx, cy, "make a forest from it with its plots (sylvarock generate --stems S --plots P)");
     const auto cStem = t.index("stem"), cSpecies = t.index("species"), cStool = t.index("stool");
     const auto cHeight = t.index("height_m"), cCrownLength = t.index("crown_length_m"),
                cCrownMass = t.index("crown_mass_kg");

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <sstream>
 #include <tuple>
@@ -35,10 +36,11 @@ std::vector<Plot> readPlots(const std::string& path) {
             if (cWkt) throw InputError(path, t.headerLine(), "two WKT columns, '" + t.header()[*cWkt] + "' and '" + name + "': give one");
             cWkt = c;
         }
-    for (const char* corner : {"xmin", "ymin", "xmax", "ymax"})
-        if (cWkt && t.has(corner))
-            throw InputError(path, t.headerLine(), "both a WKT column '" + t.header()[*cWkt] + "' and a rectangle's column '" + corner +
-                                                       "': give each plot's window one way (xmin,ymin,xmax,ymax or WKT)");
+    // A WKT polygon beside its bounding box (a GIS export) is one window; the box is checked against it.
+    const bool boxToo = cWkt && t.has("xmin") && t.has("ymin") && t.has("xmax") && t.has("ymax");
+    const auto corners = [](const std::array<double, 4>& c) {
+        return readableNumber(c[0]) + "," + readableNumber(c[1]) + "," + readableNumber(c[2]) + "," + readableNumber(c[3]);
+    };
     if (!cWkt && !t.has("xmin") && !t.has("ymin") && !t.has("xmax") && !t.has("ymax")) {
         std::string have;
         for (const auto& h : t.header()) have += (have.empty() ? "" : ",") + h;
@@ -60,6 +62,17 @@ std::vector<Plot> readPlots(const std::string& path) {
         try {
             if (cWkt) {
                 plots.push_back({id, Window::fromWkt(t.text(r, *cWkt))});
+                if (boxToo) {
+                    const Window& w = plots.back().window;
+                    const std::array<double, 4> box{t.number(r, *t.index("xmin")), t.number(r, *t.index("ymin")),
+                                                    t.number(r, *t.index("xmax")), t.number(r, *t.index("ymax"))};
+                    const std::array<double, 4> wkt{w.lower().x(), w.lower().y(), w.upper().x(), w.upper().y()};
+                    // A millimetre: the box's coordinates may be rounded where the WKT's are not.
+                    for (int k = 0; k < 4; ++k)
+                        if (std::fabs(box[k] - wkt[k]) > 1e-3)
+                            t.fail(r, "plot '" + id + "': its WKT polygon's bounding box " + corners(wkt) + " is not its rectangle " + corners(box) +
+                                          " (xmin,ymin,xmax,ymax): which is the plot?");
+                }
             } else {
                 const double x0 = t.number(r, cBox[0]), y0 = t.number(r, cBox[1]);
                 const double x1 = t.number(r, cBox[2]), y1 = t.number(r, cBox[3]);
@@ -98,14 +111,37 @@ double readDbhCell(const CsvTable& t, std::size_t row, std::size_t column) {
     return dbh;
 }
 
-void requireOnePlot(const CsvTable& table, const std::string& instead) {
+void requireOnePlot(const CsvTable& table, std::size_t xColumn, std::size_t yColumn, const std::string& instead) {
     const auto plot = table.index("plot");
     if (!plot) return;
-    for (std::size_t r = 1; r < table.rows(); ++r)
-        if (table.text(r, *plot) != table.text(0, *plot))
-            table.fail(r, *plot, "plot '" + table.text(r, *plot) + "' after plot '" + table.text(0, *plot) + "' of line " +
-                                     std::to_string(table.lineOf(0)) + ": an inventory's stems file, each plot in its own frame, read as one "
-                                     "frame would stack its plots on one another; " + instead);
+    // Each plot's stems' bounding box, with its first row. Plots in one shared frame (georeferenced
+    // trees with a plot attribute) lie side by side; an inventory's, each in its own frame from (0, 0),
+    // on one another. An empty cell names no plot.
+    struct Extent {
+        std::size_t firstRow;
+        double x0, y0, x1, y1;
+    };
+    std::map<std::string, Extent> extent;
+    for (std::size_t r = 0; r < table.rows(); ++r) {
+        const std::string& id = table.text(r, *plot);
+        if (id.empty()) continue;
+        const double x = table.number(r, xColumn), y = table.number(r, yColumn);
+        const auto [it, fresh] = extent.try_emplace(id, Extent{r, x, y, x, y});
+        Extent& e = it->second;
+        e.x0 = std::min(e.x0, x), e.y0 = std::min(e.y0, y), e.x1 = std::max(e.x1, x), e.y1 = std::max(e.y1, y);
+    }
+    for (auto a = extent.begin(); a != extent.end(); ++a)
+        for (auto b = std::next(a); b != extent.end(); ++b) {
+            const Extent &p = a->second, &q = b->second;
+            if (std::min(p.x1, q.x1) < std::max(p.x0, q.x0) || std::min(p.y1, q.y1) < std::max(p.y0, q.y0)) continue;  // apart
+            const bool aFirst = p.firstRow < q.firstRow;
+            const auto& [later, laterExtent] = aFirst ? *b : *a;
+            const std::string& earlier = aFirst ? a->first : b->first;
+            table.fail(laterExtent.firstRow, *plot,
+                       "the stems of plot '" + later + "' stand among those of plot '" + earlier +
+                           "': an inventory's stems file, each plot in its own frame, read as one frame would stack its plots on one "
+                           "another; " + instead);
+        }
 }
 
 std::vector<std::string> dataWarnings(const Inventory& inv, const std::string& stemsSource,
@@ -140,7 +176,7 @@ std::vector<std::string> dataWarnings(const Inventory& inv, const std::string& s
             const bool oneStool = s.stool && s.stool == before.stool;
             warnings.push_back(stemsSource + ":" + std::to_string(s.line) + ": stem '" + s.id + "' is at the same position " +
                                coordinates(s) + " as stem '" + before.id + "' (line " + std::to_string(before.line) + ")" +
-                               (oneStool ? ", its stool's position given to both?" : "") +
+                               (oneStool ? " (its stool's position given to both?)" : "") +
                                "; kept, its nearest-neighbour distance is 0" +
                                (oneStool ? "; virtual forests stand a stool's stems recorded at one point on a ring "
                                            "around it, touching at breast height"

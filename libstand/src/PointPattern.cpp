@@ -13,7 +13,7 @@ namespace sylva::stand {
 Inventory readPointPattern(const std::string& csv, const Window& window) {
     const CsvTable t = CsvTable::read(csv);
     const std::size_t cX = t.require("x"), cY = t.require("y");
-    requireOnePlot(t, "give it with its plots: --stems S --plots P");
+    requireOnePlot(t, cX, cY, "give it with its plots: --stems S --plots P");
     const auto cDbh = t.index("dbh_cm");
     const auto cStool = t.index("stool");
     const auto cStem = t.index("stem");

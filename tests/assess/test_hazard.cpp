@@ -652,6 +652,18 @@ TEST_F(Hazard, AReleasePointInTheSceneIsSaidToBeReplaced) {
     EXPECT_EQ(notesOf({}, "none"), 0);
 }
 
+// A lumped block larger than its fall height starts inside the ground at every release: its class's runs
+// were each left out (a note apiece, exit 3) and the map drawn from the small blocks alone. Refused once,
+// before the output folder is made.
+TEST_F(Hazard, ALumpedBlockLargerThanItsFallHeightIsRefusedUpFront) {
+    const HazardOptions o = bareSlopeWithVolumes(1, "1:9,600:1", "too_big");
+    const std::string why = errorOf([&] { runHazard(o); });
+    EXPECT_NE(why.find("the lumped model's block, a sphere of 5.23 m radius (its volume), would start inside the ground at every release: "
+                       "release.fall_height_m (5 m) must exceed it"),
+              std::string::npos) << why;
+    EXPECT_FALSE(std::filesystem::exists(o.outDir));
+}
+
 // A layer naming no CRS (an ESRI ASCII release grid without its .prj, a Shapefile without its .prj)
 // beside a DTM that names one is taken in the DTM's CRS, unchecked: said, as it is of a DTM without one.
 TEST_F(Hazard, ALayerWithoutACrsBesideADtmWithOneIsSaidToBeUnchecked) {

@@ -2,6 +2,8 @@
 // giving an InputError that names the file, the line and the problem.
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include <cmath>
 
 #include "libcommon/InputError.hpp"
@@ -100,9 +102,14 @@ TEST(InventoryReader, DiameterInMillimetres) { expectBadStems("stems_dbh_in_mm.c
 TEST(InventoryReader, StemOutsideItsPlot) { expectBadStems("stems_outside_plot.csv", 3, "lies outside its plot '2'"); }
 TEST(InventoryReader, DuplicateStemId) { expectBadStems("stems_duplicate_id.csv", 4, "duplicate stem id '1' (also on line 2)"); }
 TEST(InventoryReader, StemOfPlotWithoutWindow) { expectBadStems("stems_unknown_plot.csv", 3, "plot '3' has no window"); }
-// A rectangle and a WKT polygon for each plot that disagree (0.04 ha and 0.16 ha): the WKT was used unsaid.
+// A rectangle and a WKT polygon for each plot that disagree (plot 1: 0.04 ha and 0.16 ha): the WKT was
+// used unsaid. Where they agree (plot 2, and a GIS export's bounding box beside its polygon) it is one window.
 TEST(InventoryReader, PlotsGivenBothAsRectanglesAndWkt) {
-    expectBadPlots("plots_box_and_wkt.csv", 1, "both a WKT column 'wkt' and a rectangle's column 'xmin': give each plot's window one way");
+    expectBadPlots("plots_box_and_wkt.csv", 2, "plot '1': its WKT polygon's bounding box 0,0,40,40 is not its rectangle 0,0,20,20");
+    const std::string agreeing = ::testing::TempDir() + "plots_box_agrees_wkt.csv";
+    std::ofstream(agreeing) << "plot,xmin,ymin,xmax,ymax,wkt\n1,0,0,20,20,\"POLYGON((0 0, 20 0, 20 20, 0 20, 0 0))\"\n"
+                               "2,0,0,10,10,\"POLYGON((0 0, 10 0, 10 6, 6 6, 6 10, 0 10, 0 0))\"\n";
+    EXPECT_EQ(readInventory(data("stems_ok.csv"), agreeing).plots.size(), 2u);
 }
 TEST(InventoryReader, DegenerateWindow) { expectBadPlots("plots_degenerate.csv", 3, "degenerate window"); }
 TEST(InventoryReader, PlotOfAMicroSquareMetre) { expectBadPlots("plots_tiny.csv", 3, "window of 5e-09 m2 is outside [1, 1e10] m2"); }
@@ -159,7 +166,8 @@ TEST(PointPatternReader, PointOutsideTheWindow) {
 TEST(PointPatternReader, AStemsFileOfSeveralPlotsIsRefused) {
     const Failure f = failureOf([] { readPointPattern(data("stems_ok.csv"), Window::rectangle(0, 0, 20, 20)); });
     EXPECT_EQ(f.line, 5);
-    EXPECT_NE(f.message.find("plot '2' after plot '1' of line 2: an inventory's stems file, each plot in its own frame"), std::string::npos)
+    EXPECT_NE(f.message.find("the stems of plot '2' stand among those of plot '1': an inventory's stems file, each plot in its own frame"),
+              std::string::npos)
         << f.message;
     EXPECT_NE(f.message.find("--stems S --plots P"), std::string::npos) << f.message;
     EXPECT_EQ(readPointPattern(data("stems_identical_positions.csv"), Window::rectangle(0, 0, 50, 50)).stems.size(), 3u);

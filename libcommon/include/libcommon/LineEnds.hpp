@@ -6,7 +6,8 @@
 
 namespace sylva {
 
-// `text` with each carriage return that no line feed follows turned into a line feed.
+// `text` with its carriage returns turned into line feeds when it holds no line feed at all (lines
+// ended by CR alone); any other text as it is.
 std::string withLoneCarriageReturnsAsLineFeeds(std::string text);
 
 }  // namespace sylva

@@ -13,4 +13,9 @@ namespace sylva::dem {
 // from `seed` alone. RunResult::steps counts the rebounds; impacts list the trees hit.
 RunResult simulateLumped(const Scene& scene, int run, std::uint64_t seed, const RunOptions& options = {});
 
+// InputError when the block's sphere is larger than the fall height, so that every release would start
+// inside the ground (simulateLumped refuses each such run): for callers that run many blocks of one
+// scene, to say so once, before anything is written.
+void refuseReleaseInsideTheGround(const Scene& scene);
+
 }  // namespace sylva::dem

@@ -44,8 +44,10 @@ double readDbhCell(const CsvTable& table, std::size_t row, std::size_t column);
 
 // For readers of one frame of x, y (a forest, a point pattern): an inventory's stems file, whose column
 // `plot` names several plots each in its own frame, would stack its plots on one another. Throws
-// InputError at the first stem of a second plot, saying to give it with its plots file (`instead`).
-void requireOnePlot(const CsvTable& table, const std::string& instead);
+// InputError at the first stem of a plot whose stems' bounding box overlaps an earlier plot's, saying
+// to give it with its plots file (`instead`); plots side by side in one frame (a georeferenced tree
+// map with a plot attribute) pass.
+void requireOnePlot(const CsvTable& table, std::size_t xColumn, std::size_t yColumn, const std::string& instead);
 
 // Reads `plot,stem,x,y,dbh_cm,species,stool` stems and a plots file with either
 // `plot,xmin,ymin,xmax,ymax` or `plot,wkt` (a WKT POLYGON per plot). Throws InputError naming the

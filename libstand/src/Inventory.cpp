@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <iterator>
 #include <map>
 #include <sstream>
 #include <tuple>
@@ -130,15 +129,19 @@ void requireOnePlot(const CsvTable& table, std::size_t xColumn, std::size_t yCol
         Extent& e = it->second;
         e.x0 = std::min(e.x0, x), e.y0 = std::min(e.y0, y), e.x1 = std::max(e.x1, x), e.y1 = std::max(e.y1, y);
     }
-    for (auto a = extent.begin(); a != extent.end(); ++a)
-        for (auto b = std::next(a); b != extent.end(); ++b) {
-            const Extent &p = a->second, &q = b->second;
-            if (std::min(p.x1, q.x1) < std::max(p.x0, q.x0) || std::min(p.y1, q.y1) < std::max(p.y0, q.y0)) continue;  // apart
-            const bool aFirst = p.firstRow < q.firstRow;
-            const auto& [later, laterExtent] = aFirst ? *b : *a;
-            const std::string& earlier = aFirst ? a->first : b->first;
-            table.fail(laterExtent.firstRow, *plot,
-                       "the stems of plot '" + later + "' stand among those of plot '" + earlier +
+    // Swept along x, so that a map of many small plots (a plot id per tree, even) costs little more than
+    // sorting them: each plot is held against those that start before it ends.
+    std::vector<const std::pair<const std::string, Extent>*> byX;
+    for (const auto& e : extent) byX.push_back(&e);
+    std::sort(byX.begin(), byX.end(), [](const auto* a, const auto* b) { return a->second.x0 < b->second.x0; });
+    for (std::size_t i = 0; i < byX.size(); ++i)
+        for (std::size_t j = i + 1; j < byX.size() && byX[j]->second.x0 <= byX[i]->second.x1; ++j) {
+            const Extent &p = byX[i]->second, &q = byX[j]->second;
+            if (std::min(p.y1, q.y1) < std::max(p.y0, q.y0)) continue;  // apart
+            const auto* later = p.firstRow < q.firstRow ? byX[j] : byX[i];
+            const auto* earlier = later == byX[j] ? byX[i] : byX[j];
+            table.fail(later->second.firstRow, *plot,
+                       "the stems of plot '" + later->first + "' stand among those of plot '" + earlier->first +
                            "': an inventory's stems file, each plot in its own frame, read as one frame would stack its plots on one "
                            "another; " + instead);
         }

@@ -95,7 +95,7 @@ bool parse(int argc, const char* const* argv, const po::options_description& opt
         if (!file) throw InputError(path, 0, "cannot open config file");
         std::stringstream read;
         read << file.rdbuf();
-        const std::string text = withLoneCarriageReturnsAsLineFeeds(read.str());
+        const std::string text = withCrOnlyLineEndsAsLineFeeds(read.str());
         std::istringstream in(text);
         try {
             po::store(po::parse_config_file(in, options), vm);

@@ -91,7 +91,7 @@ void rewriteLumpedSection(const std::string& path, const std::string& comment,
     const std::string lineEnd = firstFeed == std::string::npos ? (original.find('\r') == std::string::npos ? "\n" : "\r")
                                 : firstFeed > 0 && original[firstFeed - 1] == '\r' ? "\r\n"
                                                                                    : "\n";
-    std::istringstream in(withLoneCarriageReturnsAsLineFeeds(original));
+    std::istringstream in(withCrOnlyLineEndsAsLineFeeds(original));
     const auto trimmed = [](const std::string& s) {
         const auto a = s.find_first_not_of(" \t\r"), b = s.find_last_not_of(" \t\r");
         return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);

@@ -68,7 +68,7 @@ CsvTable CsvTable::parse(const std::string& text, const std::string& sourceName)
     // A UTF-8 byte-order mark from a spreadsheet export goes before anything is read: left on the first
     // line it hid a comment's '#' and made the comment the header.
     const bool marked = text.rfind("\xEF\xBB\xBF", 0) == 0;
-    std::istringstream in(withLoneCarriageReturnsAsLineFeeds(marked ? text.substr(3) : text));
+    std::istringstream in(withCrOnlyLineEndsAsLineFeeds(marked ? text.substr(3) : text));
     std::string line;
     long lineNo = 0;
     bool haveHeader = false;

@@ -2,7 +2,7 @@
 
 namespace sylva {
 
-std::string withLoneCarriageReturnsAsLineFeeds(std::string text) {
+std::string withCrOnlyLineEndsAsLineFeeds(std::string text) {
     // Only a file without any line feed: "\r\r\n" (Python's csv module on Windows) is one line end,
     // whose carriage returns the readers trim, not a line and a blank one.
     if (text.find('\n') != std::string::npos) return text;

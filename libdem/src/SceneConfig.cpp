@@ -304,7 +304,7 @@ std::string sceneText(const std::string& path) {
     if (!in) throw InputError(path, 0, "cannot open scene file");
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
-    return withLoneCarriageReturnsAsLineFeeds(std::move(text));
+    return withCrOnlyLineEndsAsLineFeeds(std::move(text));
 }
 
 // The line of the file holding `content` (its spaces trimmed), 0 if none: program_options names an

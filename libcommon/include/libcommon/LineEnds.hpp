@@ -8,6 +8,6 @@ namespace sylva {
 
 // `text` with its carriage returns turned into line feeds when it holds no line feed at all (lines
 // ended by CR alone); any other text as it is.
-std::string withLoneCarriageReturnsAsLineFeeds(std::string text);
+std::string withCrOnlyLineEndsAsLineFeeds(std::string text);
 
 }  // namespace sylva

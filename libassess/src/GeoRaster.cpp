@@ -7,7 +7,10 @@
 
 #include <cmath>
 #include <mutex>
+#include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "GdalSupport.hpp"
 #include "libcommon/InputError.hpp"
@@ -26,6 +29,61 @@ void initGdal() {
         CPLSetErrorHandler(CPLQuietErrorHandler);
     });
 }
+
+namespace {
+
+// GDAL's ESRI ASCII reader (AAIGrid) takes the grid's values as one stream of words and reads a word
+// it cannot parse as 0, without a word: a typo ('x', '5..2') in a DTM was a pit hundreds of metres
+// deep, and one value too many on a line shifted every cell after it by one. The text is checked
+// before GDAL's values are used: every word after the header a number, as many as the grid's cells,
+// and when the grid is laid out one row per line (as every writer does), `columns` on each line.
+void requireWellFormedAsciiGrid(const std::string& path, int columns, int rows) {
+    VSILFILE* f = VSIFOpenL(path.c_str(), "rb");
+    if (!f) throw InputError(path, 0, "cannot open file");
+    struct Closer {
+        VSILFILE* f;
+        ~Closer() { VSIFCloseL(f); }
+    } closer{f};
+    const auto number = [](const std::string& word) {
+        // GDAL reads a decimal point or a decimal comma; anything else left over is not its number.
+        for (const char point : {'.', ','}) {
+            char* end = nullptr;
+            CPLStrtodDelim(word.c_str(), &end, point);
+            if (end != word.c_str() && *end == '\0') return true;
+        }
+        return false;
+    };
+    long lineNo = 0, values = 0;
+    bool inHeader = true;
+    std::vector<std::pair<long, long>> lineCounts;  // line, values on it
+    while (const char* text = CPLReadLineL(f)) {
+        ++lineNo;
+        std::istringstream words(lineNo == 1 && std::string(text).rfind("\xEF\xBB\xBF", 0) == 0 ? text + 3 : text);
+        std::string word;
+        long onLine = 0;
+        for (int i = 0; words >> word; ++i) {
+            if (inHeader && i == 0 && !number(word)) break;  // a header line: "ncols 126"
+            inHeader = false;
+            if (!number(word))
+                throw InputError(path, lineNo, "value " + std::to_string(onLine + 1) + " of the line, '" + word +
+                                                   "', is not a number (GDAL would read it as 0)");
+            ++onLine;
+        }
+        if (onLine > 0) lineCounts.emplace_back(lineNo, onLine), values += onLine;
+    }
+    const long cells = static_cast<long>(columns) * rows;
+    if (static_cast<long>(lineCounts.size()) == rows)
+        for (std::size_t r = 0; r < lineCounts.size(); ++r)
+            if (lineCounts[r].second != columns)
+                throw InputError(path, lineCounts[r].first,
+                                 "row " + std::to_string(r + 1) + " has " + std::to_string(lineCounts[r].second) +
+                                     " values, ncols = " + std::to_string(columns) + " (the rows after it would be shifted)");
+    if (values != cells)
+        throw InputError(path, lineNo, std::to_string(values) + " values for a grid of ncols x nrows = " + std::to_string(columns) +
+                                           " x " + std::to_string(rows) + " = " + std::to_string(cells) + " cells");
+}
+
+}  // namespace
 
 std::string gdalLastError() {
     const char* m = CPLGetLastErrorMsg();
@@ -74,6 +132,7 @@ GeoRaster readRaster(const std::string& path, const std::string& values) {
     if (valueBands > 1)
         throw InputError(path, 0, "the raster has " + std::to_string(valueBands) + " bands of values (an image? a coloured hillshade?): " +
                                       values + " are one band; give that band alone (gdal_translate -b N)");
+    if (std::string(ds->GetDriver()->GetDescription()) == "AAIGrid") requireWellFormedAsciiGrid(path, g.columns, g.rows);
     GDALRasterBand* band = ds->GetRasterBand(1);
     std::vector<double>& z = raster.values;
     z.resize(static_cast<std::size_t>(g.columns) * g.rows);

@@ -159,6 +159,25 @@ TEST_F(Hazard, DtmReadingErrorsNameTheFile) {
     }
 }
 
+// GDAL's ESRI ASCII reader read a word it cannot parse as 0 m (a pit in the slope) and took one value
+// too many on a line from the next row, shifting every cell after it; both are refused at their line.
+TEST_F(Hazard, AMalformedAsciiGridIsRefusedAtItsLine) {
+    const std::string header = "ncols 3\nnrows 3\nxllcorner 0\nyllcorner 0\ncellsize 5\nNODATA_value -9999\n";
+    const auto refusal = [&](const std::string& name, const std::string& rows) { return errorOf([&] { readDtm(write(name, header + rows)); }); };
+    EXPECT_NE(refusal("typo.asc", "30 20 10\n31 2x 11\n32 22 12\n").find("typo.asc:8: value 2 of the line, '2x', is not a number"), std::string::npos)
+        << refusal("typo.asc", "30 20 10\n31 2x 11\n32 22 12\n");
+    EXPECT_NE(refusal("extra.asc", "30 20 10\n31 21 11 99\n32 22\n").find("extra.asc:8: row 2 has 4 values, ncols = 3"), std::string::npos)
+        << refusal("extra.asc", "30 20 10\n31 21 11 99\n32 22\n");
+    EXPECT_NE(refusal("long.asc", "30 20 10\n31 21 11\n32 22 12\n33\n").find("long.asc:10: 10 values for a grid of ncols x nrows = 3 x 3"),
+              std::string::npos)
+        << refusal("long.asc", "30 20 10\n31 21 11\n32 22 12\n33\n");
+    // Rows wrapped over lines, a decimal comma and a NODATA cell are what GDAL reads as meant.
+    const GeoRaster wrapped = readRaster(write("wrapped.asc", header + "30 20 10 31\n21 11 32 22,5 -9999\n"), "heights");
+    EXPECT_DOUBLE_EQ(wrapped.values[wrapped.grid.index(0, 0)], 30);  // row 0: the north one
+    EXPECT_DOUBLE_EQ(wrapped.values[wrapped.grid.index(1, 2)], 22.5);
+    EXPECT_TRUE(std::isnan(wrapped.values[wrapped.grid.index(2, 2)]));
+}
+
 // The simulator works in metres: a DTM in degrees is refused, and so are absurd cells.
 TEST_F(Hazard, DtmOutsideMetresIsRefused) {
     const std::string asc = dtm("deg.asc", 3, 3, 0.0001, 5.7, 45.2, [](int, int) { return 1000.0; });

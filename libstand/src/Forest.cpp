@@ -75,7 +75,7 @@ Forest readForestCsv(const std::string& path) {
             t.fail(r, "stem at (" + t.text(r, cx) + ", " + t.text(r, cy) + ") stands where the stem of line " +
                           std::to_string(it->second) + " stands (to the millimetre): a repeated line?");
         if (cSpecies) tree.species = t.text(r, *cSpecies);
-        if (cStool && !t.text(r, *cStool).empty()) tree.stool = t.integer(r, *cStool);
+        if (cStool && readStoolCell(t, r, *cStool)) tree.stool = t.integer(r, *cStool);
 
         // Computed allometry always passes the checks below, so only a value read from the file can fail.
         const std::optional<double> height = optionalNumber(t, r, cHeight);

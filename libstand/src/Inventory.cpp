@@ -101,9 +101,19 @@ double Inventory::areaHa() const {
     return a / 1e4;
 }
 
+namespace {
+bool missingValue(const std::string& text) { return text.empty() || text == "NA" || text == "nan" || text == "NaN"; }
+}  // namespace
+
+std::optional<std::string> readStoolCell(const CsvTable& t, std::size_t row, std::size_t column) {
+    const std::string& text = t.text(row, column);
+    if (missingValue(text)) return std::nullopt;
+    return text;
+}
+
 double readDbhCell(const CsvTable& t, std::size_t row, std::size_t column) {
     const std::string& text = t.text(row, column);
-    if (text.empty() || text == "NA" || text == "nan" || text == "NaN") return std::nan("");
+    if (missingValue(text)) return std::nan("");
     const double dbh = t.number(row, column);
     if (dbh == 0) return 0;
     if (const std::string why = dbhProblem(dbh); !why.empty()) t.fail(row, column, why);
@@ -162,7 +172,15 @@ std::vector<std::string> dataWarnings(const Inventory& inv, const std::string& s
                            std::to_string(below) + " below breast height (DBH 0), first on line " +
                            std::to_string(firstLine) + ": N, g(r) and Clark-Evans use all " +
                            std::to_string(inv.stems.size()) + " stems; G and the DBH statistics the " +
-                           std::to_string(inv.stems.size() - below - unmeasured) + " measured ones");
+                           std::to_string(inv.stems.size() - below - unmeasured) + " measured ones" +
+                           (below > 0 ? "; virtual forests leave the stems below breast height out" : ""));
+    // Diameters in mm are refused (above 200 cm); in metres they would pass as sub-centimetre stems.
+    double largest = 0;
+    for (const auto& s : inv.stems)
+        if (measured(s)) largest = std::max(largest, s.dbhCm);
+    if (largest > 0 && largest < 1)
+        warnings.push_back(stemsSource + ": every DBH is below 1 cm (the largest " + readableNumber(largest) +
+                           "): diameters in metres? dbh_cm is in centimetres");
     std::map<std::string, std::vector<const Stem*>> byPlot;
     for (const auto& s : inv.stems) byPlot[s.plot].push_back(&s);
     for (const auto& p : inv.plots) {
@@ -242,7 +260,7 @@ Inventory readInventory(const std::string& stemsCsv, const std::string& plotsCsv
         s.y = t.number(r, cY);
         s.dbhCm = readDbhCell(t, r, cDbh);
         if (cSpecies) s.species = t.text(r, *cSpecies);
-        if (cStool && !t.text(r, *cStool).empty()) s.stool = t.text(r, *cStool);
+        if (cStool) s.stool = readStoolCell(t, r, *cStool);
         const auto plot = plotById.find(s.plot);
         if (plot == plotById.end())
             t.fail(r, cPlot, "plot '" + s.plot + "' has no window in " + plotsCsv);

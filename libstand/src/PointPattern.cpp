@@ -5,6 +5,7 @@
 #include <map>
 #include <sstream>
 
+#include "libstand/Inventory.hpp"
 #include "libcommon/CsvTable.hpp"
 #include "libcommon/InputError.hpp"
 
@@ -36,7 +37,7 @@ Inventory readPointPattern(const std::string& csv, const Window& window) {
         s.x = t.number(r, cX);
         s.y = t.number(r, cY);
         s.dbhCm = cDbh ? readDbhCell(t, r, *cDbh) : NAN;
-        if (cStool && !t.text(r, *cStool).empty()) s.stool = t.text(r, *cStool);
+        if (cStool) s.stool = readStoolCell(t, r, *cStool);
         if (!window.contains({s.x, s.y})) {
             std::ostringstream os;
             os << "point (" << s.x << ", " << s.y << ") lies outside the window (" << window.describe() << ")";

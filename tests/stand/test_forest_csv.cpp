@@ -75,6 +75,11 @@ TEST(ForestReader, PlainTreeFileGetsIdsAndAllometry) {
     EXPECT_NEAR(f.trees[0].heightM, 13.87164, 1e-9);
     EXPECT_DOUBLE_EQ(f.trees[0].crownLengthM, crownLengthM(f.trees[0].heightM));
     EXPECT_DOUBLE_EQ(f.trees[1].crownMassKg, crownMassKg(30));
+    // A missing stool as R or pandas write it: a single tree, as an empty cell is.
+    const Forest na = readForestCsv(writeText("na_stools.csv", "x,y,dbh_cm,stool\n1,2,20,NA\n3.5,4,30,nan\n5,6,30,7\n"));
+    EXPECT_FALSE(na.trees[0].stool.has_value());
+    EXPECT_FALSE(na.trees[1].stool.has_value());
+    EXPECT_EQ(na.trees[2].stool, 7);
 }
 
 // A spreadsheet's byte-order mark before a comment line hid the '#': the comment became the header

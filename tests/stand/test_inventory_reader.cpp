@@ -111,6 +111,35 @@ TEST(InventoryReader, PlotsGivenBothAsRectanglesAndWkt) {
                                "2,0,0,10,10,\"POLYGON((0 0, 10 0, 10 6, 6 6, 6 10, 0 10, 0 0))\"\n";
     EXPECT_EQ(readInventory(data("stems_ok.csv"), agreeing).plots.size(), 2u);
 }
+// R's write.csv and pandas write a missing stool as NA or nan: single trees, as an empty cell is, not
+// one stool named "NA" holding every single tree of the plot.
+TEST(InventoryReader, AMissingStoolWrittenAsNaIsASingleTree) {
+    const std::string stems = ::testing::TempDir() + "stems_stool_na.csv";
+    std::ofstream(stems) << "plot,stem,x,y,dbh_cm,species,stool\n1,1,2,3,12.5,beech,7\n1,2,2.5,3.5,10,beech,7\n"
+                            "1,3,15,15,30.2,oak,NA\n1,4,5,15,20,ash,nan\n2,5,5,5,20,ash,NaN\n";
+    const Inventory inv = readInventory(stems, data("plots_ok.csv"));
+    ASSERT_EQ(inv.stems.size(), 5u);
+    EXPECT_EQ(inv.stems[0].stool, std::optional<std::string>("7"));
+    for (std::size_t i = 2; i < 5; ++i) EXPECT_FALSE(inv.stems[i].stool) << "line " << inv.stems[i].line;
+    for (const auto& w : inv.warnings) EXPECT_EQ(w.find("stool"), std::string::npos) << w;
+    const std::string pattern = ::testing::TempDir() + "points_stool_na.csv";
+    std::ofstream(pattern) << "x,y,dbh_cm,stool\n2,3,12.5,7\n2.5,3.5,10,7\n15,15,30.2,NA\n5,15,20,nan\n";
+    const Inventory points = readPointPattern(pattern, Window::rectangle(0, 0, 20, 20));
+    EXPECT_EQ(points.stems[1].stool, std::optional<std::string>("7"));
+    for (std::size_t i = 2; i < 4; ++i) EXPECT_FALSE(points.stems[i].stool) << "line " << points.stems[i].line;
+}
+
+// Diameters in mm are refused; in metres they passed as sub-centimetre stems (G 0.001 m2/ha) unsaid.
+TEST(InventoryReader, DiametersInMetresAreSaid) {
+    const std::string stems = ::testing::TempDir() + "stems_dbh_in_m.csv";
+    std::ofstream(stems) << "plot,stem,x,y,dbh_cm\n1,1,2,3,0.125\n1,2,12,13,0.32\n2,3,5,5,0\n";
+    const Inventory inv = readInventory(stems, data("plots_ok.csv"));
+    bool said = false;
+    for (const auto& w : inv.warnings) said = said || w.find("every DBH is below 1 cm (the largest 0.32): diameters in metres?") != std::string::npos;
+    EXPECT_TRUE(said);
+    for (const auto& w : readInventory(data("stems_ok.csv"), data("plots_ok.csv")).warnings) EXPECT_EQ(w.find("metres"), std::string::npos) << w;
+}
+
 TEST(InventoryReader, DegenerateWindow) { expectBadPlots("plots_degenerate.csv", 3, "degenerate window"); }
 TEST(InventoryReader, PlotOfAMicroSquareMetre) { expectBadPlots("plots_tiny.csv", 3, "window of 5e-09 m2 is outside [1, 1e10] m2"); }
 TEST(InventoryReader, DuplicatePlotId) { expectBadPlots("plots_duplicate_id.csv", 3, "duplicate plot id '1'"); }

@@ -42,6 +42,11 @@ inline bool measured(const Stem& s) { return s.dbhCm > 0; }
 // 0: a stem below breast height. Throws InputError (file, line) for anything else.
 double readDbhCell(const CsvTable& table, std::size_t row, std::size_t column);
 
+// The stool cell of a stems, forest or point file: the stool's id, or none for a single tree: an empty
+// cell, or "NA", "nan" as R and pandas write a missing value (read as an id, every single tree of a plot
+// was one stool named "NA").
+std::optional<std::string> readStoolCell(const CsvTable& table, std::size_t row, std::size_t column);
+
 // For readers of one frame of x, y (a forest, a point pattern): an inventory's stems file, whose column
 // `plot` names several plots each in its own frame, would stack its plots on one another. Throws
 // InputError at the first stem of a plot whose stems' bounding box overlaps an earlier plot's, saying

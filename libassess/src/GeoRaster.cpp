@@ -175,6 +175,12 @@ Dtm readDtm(const std::string& path) {
         if (std::fabs(crs.GetLinearUnits(&unit) - 1) > 1e-9)
             throw InputError(path, 0, "the DTM's CRS counts in " + std::string(unit ? unit : "an unknown unit") +
                                           ", not metres: reproject it (gdalwarp -t_srs) to a metric CRS");
+        // A compound CRS (a LiDAR DTM's, say) gives the heights' unit apart: heights in feet were read
+        // as metres, the relief 3.28 times too steep.
+        const char* heightUnit = nullptr;
+        if ((crs.IsCompound() || crs.IsVertical()) && std::fabs(crs.GetTargetLinearUnits("VERT_CS", &heightUnit) - 1) > 1e-9)
+            throw InputError(path, 0, "the DTM's heights are in " + std::string(heightUnit ? heightUnit : "an unknown unit") + " (" +
+                                          crsName(g.crsWkt) + "), not metres: convert them (gdalwarp -t_srs with a vertical CRS in metres)");
     }
     if (!(t[1] >= 0.01 && t[1] <= 1000))
         throw InputError(path, 0, "cells of " + readableNumber(t[1]) + " m: sylvarock reads DTMs with cells of 0.01 to 1000 m");
@@ -215,6 +221,9 @@ bool sameCrs(const std::string& a, const std::string& b) {
     if (a.empty() || b.empty()) return true;
     OGRSpatialReference ra, rb;
     if (ra.importFromWkt(a.c_str()) != OGRERR_NONE || rb.importFromWkt(b.c_str()) != OGRERR_NONE) return a == b;
+    // A LiDAR DTM in Lambert-93 + NGF-IGN69 height and a release drawn in Lambert-93 are in one frame.
+    ra.StripVertical();
+    rb.StripVertical();
     const char* options[] = {"IGNORE_DATA_AXIS_TO_SRS_AXIS_MAPPING=YES", "CRITERION=EQUIVALENT_EXCEPT_AXIS_ORDER_GEOGCRS", nullptr};
     return ra.IsSame(&rb, options);
 }

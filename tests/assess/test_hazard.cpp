@@ -187,6 +187,28 @@ TEST_F(Hazard, DtmOutsideMetresIsRefused) {
     EXPECT_NE(errorOf([&] { readDtm(tiny); }).find("cells of 0.01 to 1000 m"), std::string::npos);
 }
 
+// A LiDAR DTM's compound CRS: heights in US feet were read as metres (relief 3.28 times too steep);
+// heights in metres are placed by their horizontal CRS alone, which a release drawn in Lambert-93 shares.
+TEST_F(Hazard, ACompoundCrsIsReadByItsParts) {
+    initGdal();
+    const auto tif = [&](const std::string& name, const char* crs) {
+        const std::string path = (dir_ / name).string();
+        GDALDatasetUniquePtr ds(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(path.c_str(), 4, 4, 1, GDT_Float32, nullptr));
+        double gt[6] = {600000, 5, 0, 5100020, 0, -5};
+        ds->SetGeoTransform(gt);
+        OGRSpatialReference srs;
+        srs.SetFromUserInput(crs);
+        ds->SetSpatialRef(&srs);
+        return path;
+    };
+    const std::string feet = tif("feet.tif", "EPSG:26911+6360");  // UTM 11N + NAVD88 height (ftUS)
+    EXPECT_NE(errorOf([&] { readDtm(feet); }).find("feet.tif: the DTM's heights are in US survey foot"), std::string::npos)
+        << errorOf([&] { readDtm(feet); });
+    const Dtm metres = readDtm(tif("metres.tif", "EPSG:2154+5720"));  // Lambert-93 + NGF-IGN69 height
+    EXPECT_TRUE(sameCrs(metres.grid.crsWkt, kLambert93Prj));
+    EXPECT_FALSE(sameCrs(metres.grid.crsWkt, R"(GEOGCS["WGS 84",DATUM["WGS_1984",SPHEROID["WGS 84",6378137,298.257223563]],PRIMEM["Greenwich",0],UNIT["degree",0.0174532925199433]])"));
+}
+
 // A Float32 NODATA of -9999.9 is not the double -9999.9: the band's mask knows the cell has no height.
 TEST_F(Hazard, Float32NoDataIsRecognised) {
     const Dtm d = readDtm(dtm("d.asc", 3, 2, 5.0, 0, 0, [](int c, int) { return 10.0 * c; }));

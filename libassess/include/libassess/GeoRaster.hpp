@@ -51,7 +51,8 @@ Dtm readDtm(const std::string& path);
 void writeGeoTiff(const std::string& path, const RasterGrid& grid, const std::vector<float>& values, double noData,
                   const std::string& description);
 
-// Whether two CRS (WKT) are the same; true when either is empty (nothing to compare).
+// Whether two CRS (WKT) place points alike: their horizontal parts are the same (a compound CRS's
+// vertical part says what its heights are in, not where its points are); true when either is empty.
 bool sameCrs(const std::string& a, const std::string& b);
 // A CRS's name for messages ("WGS 84", "RGF93 v1 / Lambert-93"), or "no CRS".
 std::string crsName(const std::string& wkt);

@@ -71,9 +71,24 @@ void prepareOutDir(const std::string& dir, bool resume) {
 
 std::string hashOf(const std::string& path) { return path.empty() ? "none" : toHex(fileFingerprint(path), 16); }
 
-// A GDAL dataset by the contents of every file it is read from, not only the one named.
+// A GDAL dataset by what a map reads of it. A raster by its grid, CRS and values: QGIS and gdalinfo
+// -stats write statistics into its .aux.xml, which change no value (a resumed map was refused for
+// them), while a scale, an offset or a NODATA value given there changes the values read. Vector data
+// by the contents of every file it is read from, not only the one named.
 std::string datasetHashOf(const std::string& path) {
     if (path.empty()) return "none";
+    if (!openVectorUnlessRaster(path)) {
+        const GeoRaster raster = readRaster(path, "values");
+        const RasterGrid& g = raster.grid;
+        std::string bytes = std::to_string(g.columns) + ' ' + std::to_string(g.rows) + '\n' + g.crsWkt + '\n';
+        for (const double t : g.geoTransform) bytes += exactText(t) + ' ';
+        for (int r = 0; r < g.rows; ++r) {  // row by row: a whole DTM's text would take gigabytes
+            std::string row;
+            for (int c = 0; c < g.columns; ++c) row += exactText(raster.values[g.index(c, r)]) + ' ';
+            bytes += toHex(fnv1a64(row), 16);
+        }
+        return toHex(fnv1a64(bytes), 16);
+    }
     std::string hashes;
     for (const std::string& file : datasetFiles(path)) hashes += toHex(fileFingerprint(file), 16);
     return toHex(fnv1a64(hashes), 16);
@@ -89,7 +104,7 @@ std::vector<std::string> inputsOf(const HazardOptions& o, const stand::Forest& f
                  exactText(t.heightM) + ' ' + exactText(t.crownLengthM) + ' ' + exactText(t.crownMassKg) + '\n';
     std::string volumes;
     for (const auto& v : o.blockVolumes) volumes += exactText(v.volumeM3) + ':' + exactText(v.weight) + ' ';
-    std::vector<std::string> lines{"sylvarock hazard store 3",
+    std::vector<std::string> lines{"sylvarock hazard store 4",
                                    "dtm " + datasetHashOf(o.dtmPath),
                                    "release " + datasetHashOf(o.releasePath),
                                    "forest " + std::to_string(forest.trees.size()) + " stems " + toHex(fnv1a64(stems), 16),

@@ -633,6 +633,12 @@ TEST_F(Hazard, ResumedMapRunsWhatItLacksAndEqualsTheWholeMap) {
     const std::string aux = o.dtmPath + ".aux.xml";
     std::ofstream(aux) << "<PAMDataset><PAMRasterBand band=\"1\"><Offset>100</Offset><Scale>1</Scale></PAMRasterBand></PAMDataset>\n";
     EXPECT_NE(errorOf([&] { runHazard(o); }).find("the map was started with 'dtm "), std::string::npos) << errorOf([&] { runHazard(o); });
+    // Statistics there (gdalinfo -stats and QGIS write them) change no height: the map resumes.
+    std::ofstream(aux) << "<PAMDataset><PAMRasterBand band=\"1\"><Metadata><MDI key=\"STATISTICS_MAXIMUM\">300</MDI>"
+                          "<MDI key=\"STATISTICS_MINIMUM\">0</MDI></Metadata></PAMRasterBand></PAMDataset>\n";
+    reRun = 0;
+    EXPECT_NO_THROW(runHazard(o));
+    EXPECT_EQ(reRun, 0);
     fs::remove(aux);
     o.outDir = (dir_ / "nothing").string();
     fs::create_directories(o.outDir);

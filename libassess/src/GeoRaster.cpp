@@ -122,6 +122,9 @@ GeoRaster readRaster(const std::string& path, const std::string& values) {
         throw InputError(path, 0, "the raster has no georeferencing (geotransform): sylvarock needs cell size and position");
     const auto& t = g.geoTransform;
     if (t[2] != 0 || t[4] != 0) throw InputError(path, 0, "a rotated or sheared raster: warp it north-up first (gdalwarp)");
+    if (t[1] > 0 && std::fabs(t[5] - t[1]) <= 1e-9 * t[1])
+        throw InputError(path, 0, "a south-up raster (its first row the southern one): warp it north-up first (gdalwarp -tr " +
+                                      readableNumber(t[1]) + " " + readableNumber(t[1]) + ")");
     if (!(t[1] > 0) || std::fabs(t[5] + t[1]) > 1e-9 * t[1])
         throw InputError(path, 0, "cells of " + readableNumber(t[1]) + " x " + readableNumber(-t[5]) +
                                       " m: sylvarock needs square cells, north up (gdalwarp -tr D D)");

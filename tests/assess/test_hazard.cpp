@@ -127,6 +127,15 @@ TEST_F(Hazard, DtmReadingErrorsNameTheFile) {
     EXPECT_NE(errorOf([&] { readDtm((dir_ / "none.tif").string()); }).find("none.tif: cannot read it as a raster"), std::string::npos);
     const std::string rect = write("rect.asc", "ncols 3\nnrows 2\nxllcorner 0\nyllcorner 0\ndx 2\ndy 3\nNODATA_value -9999\n1 2 3\n4 5 6\n");
     EXPECT_NE(errorOf([&] { readDtm(rect); }).find("square cells"), std::string::npos) << errorOf([&] { readDtm(rect); });
+    initGdal();
+    {  // rows running south to north: said so, not "cells of 5 x -5 m"
+        GDALDatasetUniquePtr up(GetGDALDriverManager()->GetDriverByName("GTiff")->Create((dir_ / "southup.tif").c_str(), 3, 2, 1, GDT_Float32, nullptr));
+        double gt[6] = {600000, 5, 0, 5100000, 0, 5};
+        up->SetGeoTransform(gt);
+    }
+    EXPECT_NE(errorOf([&] { readDtm((dir_ / "southup.tif").string()); }).find("a south-up raster (its first row the southern one): warp it north-up first (gdalwarp -tr 5 5)"),
+              std::string::npos)
+        << errorOf([&] { readDtm((dir_ / "southup.tif").string()); });
     // A header announcing 10^10 cells (a sparse GeoTIFF: no data written) is refused before it is read.
     initGdal();
     {

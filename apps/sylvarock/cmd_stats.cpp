@@ -70,7 +70,9 @@ StandPcf standPairCorrelation(const stand::Inventory& inv, const po::variables_m
     if (!(s.rmax > 0)) throw InputError("--pcf-rmax: must be > 0");
     // Past a plot's shortest side some directions hold no pair of it, and the edge corrections
     // divide by a window overlap of zero: g(r) read 0 there, as if no stems stood so far apart.
+    // A plot without a pair of stems adds nothing to g(r), at any r.
     for (std::size_t i = 0; i < s.plots.size(); ++i) {
+        if (!stand::holdsAPair(s.plots[i])) continue;
         const Eigen::Vector2d frame = s.plots[i].window.upper() - s.plots[i].window.lower();
         if (s.rmax >= frame.minCoeff()) {
             std::ostringstream os;

@@ -105,9 +105,13 @@ std::vector<PlotPoints> plotPoints(const Inventory& inventory) {
 }
 
 double defaultPairCorrelationRmax(const std::vector<PlotPoints>& plots) {
-    double rmax = std::numeric_limits<double>::infinity();
-    for (const auto& p : plots) rmax = std::min(rmax, defaultPairCorrelationRmax(p.window, p.points.size()));
-    return rmax;
+    double rmax = std::numeric_limits<double>::infinity(), any = rmax;
+    for (const auto& p : plots) {
+        const double r = defaultPairCorrelationRmax(p.window, p.points.size());
+        any = std::min(any, r);
+        if (holdsAPair(p)) rmax = std::min(rmax, r);
+    }
+    return std::isfinite(rmax) ? rmax : any;
 }
 
 PairCorrelation pooledPairCorrelation(const std::vector<PlotPoints>& plots, double rmax, std::size_t nr,

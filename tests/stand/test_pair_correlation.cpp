@@ -154,3 +154,15 @@ TEST(PairCorrelation, PoolingIsTheWeightedMean) {
 }
 
 }  // namespace
+
+// A plot of fewer than two stems weighs nothing in the pooled g(r): an empty 2 m plot cut a stand's
+// default range (a quarter of the shortest side) from 12.5 to 0.5 m. Only plots holding a pair set it.
+TEST(PairCorrelation, APlotWithoutAPairDoesNotSetTheDefaultRange) {
+    std::vector<PlotPoints> plots{{Window::rectangle(0, 0, 50, 50), {{10, 10}, {20, 30}, {40, 5}}},
+                                  {Window::rectangle(0, 0, 2, 2), {}},
+                                  {Window::rectangle(0, 0, 4, 4), {{1, 1}}}};
+    EXPECT_DOUBLE_EQ(defaultPairCorrelationRmax(plots), defaultPairCorrelationRmax(plots[0].window, 3));
+    EXPECT_DOUBLE_EQ(defaultPairCorrelationRmax(plots), 12.5);
+    plots[0].points.resize(1);  // no plot holds a pair: all of them set it, as before
+    EXPECT_DOUBLE_EQ(defaultPairCorrelationRmax(plots), 0.5);
+}

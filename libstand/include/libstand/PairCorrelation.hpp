@@ -46,7 +46,10 @@ struct PlotPoints {
 
 // Each plot of the inventory with its stems' positions (every stem, measured or not).
 std::vector<PlotPoints> plotPoints(const Inventory& inventory);
-// The largest r for all plots: the smallest of their defaultPairCorrelationRmax.
+// A plot of fewer than two stems holds no pair: it weighs nothing in the pooled g(r).
+inline bool holdsAPair(const PlotPoints& plot) { return plot.points.size() >= 2; }
+// The largest r for all plots: the smallest of their defaultPairCorrelationRmax over the plots that
+// hold a pair (an empty 2 m plot cut a stand's range to 0.5 m), over all plots if none does.
 double defaultPairCorrelationRmax(const std::vector<PlotPoints>& plots);
 
 // A stand's g(r): each plot's estimate on one r grid, pooled with weights n(n-1), the number of

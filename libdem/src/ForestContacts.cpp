@@ -149,8 +149,8 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
     }
 }
 
-// Pairs of connections of different awake stems that may touch: within their radii plus the skin
-// of each other when listed. The list holds until some node has moved half the skin (then no pair
+// Pairs of connections of different awake stems, or of two pieces of a broken one, that may touch:
+// within their radii plus the skin of each other when listed. The list holds until some node has moved half the skin (then no pair
 // left out can have closed the skin) or the awake stems change.
 void ForestMotion::listStemPairs() {
     stemPairs_.clear();
@@ -174,27 +174,44 @@ void ForestMotion::listStemPairs() {
             if (box.intersects(other)) out.push_back(c);
         }
     };
+    const auto pairIfNear = [this](std::size_t ia, std::size_t ca, std::size_t ib, std::size_t cb) {
+        const Stem& A = awake_[ia].stem;
+        const Stem& B = awake_[ib].stem;
+        const Vec3 &a0 = A.position[ca], &a1 = A.position[ca + 1];
+        const Vec3 &b0 = B.position[cb], &b1 = B.position[cb + 1];
+        const double near = 0.5 * (A.connectionDiameter(ca) + B.connectionDiameter(cb)) + kStemPairSkin;
+        // Cheap rejection on the segments' midpoints before the exact closest points.
+        const double reach = near + 0.5 * ((a1 - a0).norm() + (b1 - b0).norm());
+        if ((0.5 * (a0 + a1) - 0.5 * (b0 + b1)).squaredNorm() > reach * reach) return;
+        const auto [s, t] = closestBetweenSegments(a0, a1, b0, b1);
+        if ((a0 + s * (a1 - a0) - b0 - t * (b1 - b0)).squaredNorm() > near * near) return;
+        stemPairs_.push_back(ConnectionPair{ia, ib, ca, cb, false});
+    };
     for (std::size_t ia = 0; ia < awake_.size(); ++ia)
         for (std::size_t ib = ia + 1; ib < awake_.size(); ++ib) {
             if (!boxes_[ia].intersects(boxes_[ib])) continue;
-            const Stem& A = awake_[ia].stem;
-            const Stem& B = awake_[ib].stem;
-            inBox(A, boxes_[ib], nearA_);
-            inBox(B, boxes_[ia], nearB_);
-            for (const std::size_t ca : nearA_) {
-                const Vec3 &a0 = A.position[ca], &a1 = A.position[ca + 1];
-                for (const std::size_t cb : nearB_) {
-                    const Vec3 &b0 = B.position[cb], &b1 = B.position[cb + 1];
-                    const double near = 0.5 * (A.connectionDiameter(ca) + B.connectionDiameter(cb)) + kStemPairSkin;
-                    // Cheap rejection on the segments' midpoints before the exact closest points.
-                    const double reach = near + 0.5 * ((a1 - a0).norm() + (b1 - b0).norm());
-                    if ((0.5 * (a0 + a1) - 0.5 * (b0 + b1)).squaredNorm() > reach * reach) continue;
-                    const auto [s, t] = closestBetweenSegments(a0, a1, b0, b1);
-                    if ((a0 + s * (a1 - a0) - b0 - t * (b1 - b0)).squaredNorm() > near * near) continue;
-                    stemPairs_.push_back(ConnectionPair{ia, ib, ca, cb, false});
+            inBox(awake_[ia].stem, boxes_[ib], nearA_);
+            inBox(awake_[ib].stem, boxes_[ia], nearB_);
+            for (const std::size_t ca : nearA_)
+                for (const std::size_t cb : nearB_) pairIfNear(ia, ca, ib, cb);
+        }
+    // The pieces of a broken stem meet one another as they meet other stems: a top breaking off fell
+    // through its own stump to the soil.
+    for (std::size_t k = 0; k < awake_.size(); ++k) {
+        const Stem& s = awake_[k].stem;
+        if (!awake_[k].broken) continue;
+        for (std::size_t ca = 0; ca < s.connectionCount(); ++ca) {
+            if (s.broken(ca)) continue;
+            bool apart = false;  // a broken connection between ca and cb: two pieces
+            for (std::size_t cb = ca + 1; cb < s.connectionCount(); ++cb) {
+                if (s.broken(cb)) {
+                    apart = true;
+                    continue;
                 }
+                if (apart) pairIfNear(k, ca, k, cb);
             }
         }
+    }
     stemPairsStale_ = false;
 }
 

@@ -58,6 +58,11 @@ public:
     // had when they were woken (they enter the budget then).
     double budgetTerm() const { return budget_; }
     const NodeSteps& nodeSteps() const { return nodeSteps_; }
+    // The stem of tree `tree` as it is now, if awake (null if asleep or never woken).
+    const Stem* awakeStem(std::uint32_t tree) const {
+        const AwakeStem* a = awake(tree);
+        return a ? &a->stem : nullptr;
+    }
     ForestLedger ledger() const;
 
 private:

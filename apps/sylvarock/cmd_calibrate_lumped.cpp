@@ -52,10 +52,27 @@ std::vector<double> readRunouts(const std::string& path, const dem::Scene& scene
         reasons.insert(dem::toString(r));
         listed += (listed.empty() ? "" : ", ") + dem::toString(r);
     }
+    // Each run's release must be one this scene draws: a campaign released elsewhere (another x, a
+    // y outside the range, another fall height or bed) fitted the lumped soil to another slope.
+    const auto rx = t.index("release_x"), ry = t.index("release_y"), rz = t.index("release_z");
+    const dem::ReleaseConfig& rel = scene.config().release;
+    constexpr double kWritten = 1e-3;  // m: runs.csv gives 4 decimals
+    const auto releasedHere = [&](double x, double y, double z) {
+        if (std::abs(x - rel.x) > kWritten || y < rel.yMin - kWritten || y > rel.yMax + kWritten) return false;
+        if (x < bed.xmin() || x > bed.xmax() || y < bed.ymin() || y > bed.ymax()) return false;
+        return std::abs(z - bed.surfaceHeight(x, y) - rel.fallHeight) <= kWritten;
+    };
     std::map<long, long> seen;  // run -> line
     std::vector<double> out;
     for (std::size_t i = 0; i < t.rows(); ++i) {
         const long id = t.integer(i, run);
+        if (rx && ry && rz && !releasedHere(t.number(i, *rx), t.number(i, *ry), t.number(i, *rz))) {
+            std::ostringstream os;
+            os << "released at (" << t.text(i, *rx) << ", " << t.text(i, *ry) << ", " << t.text(i, *rz) << "), where this scene releases at x = "
+               << readableNumber(rel.x) << " m, y " << (rel.yMax > rel.yMin ? "in [" + readableNumber(rel.yMin) + ", " + readableNumber(rel.yMax) + "]" : "= " + readableNumber(rel.yMin))
+               << " m, " << readableNumber(rel.fallHeight) << " m above its bed: a runs.csv of another scene? calibrate on a campaign of this scene";
+            t.fail(i, *rx, os.str());
+        }
         if (const auto [at, fresh] = seen.emplace(id, t.lineOf(i)); !fresh)
             t.fail(i, run, "run " + std::to_string(id) + " is also on line " + std::to_string(at->second) +
                                ": two campaigns' runs.csv joined? calibrate on one campaign's file");

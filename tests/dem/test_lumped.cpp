@@ -306,6 +306,28 @@ TEST(LumpedCalibration, RefusesRowsThatAreNotOneBareCampaigns) {
     }
 }
 
+// A campaign released elsewhere (here 100 m further down) was fitted as this scene's: each run's
+// release must be one this scene draws, at its x, in its y range, its fall height above its bed.
+TEST(LumpedCalibration, RefusesTheRunsOfAnotherScenesRelease) {
+    const auto dir = std::filesystem::temp_directory_path() / "sylvarock-calibrate-elsewhere";
+    std::filesystem::remove_all(dir);
+    const std::string scene = std::string(SYLVAROCK_DATA) + "/scenes/no-forest.ini";
+    ASSERT_EQ(sylva::testing::runCli("simulate --scene " + scene + " --set release.x_m=200 --runs 3 --no-figures --out " + dir.string()).status, 0);
+    const std::string runs = (dir / "runs.csv").string();
+    std::ifstream in(runs);
+    std::string header, row, text;
+    std::getline(in, header);
+    std::getline(in, row);
+    text = header + "\n";
+    for (int i = 0; i < 120; ++i) text += std::to_string(i) + row.substr(row.find(',')) + "\n";  // the first run, 120 times
+    in.close();
+    std::ofstream(runs) << text;
+    const auto r = sylva::testing::runCli("calibrate-lumped --scene " + scene + " --dem " + runs);
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find(runs + ":2: column 'release_x': released at (200.0000, "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("where this scene releases at x = 100 m, y = 100 m, 5 m above its bed"), std::string::npos) << r.output;
+}
+
 // A lumped campaign's runs.csv has the DEM's columns: fitted on it, the roughness fitted itself (exit
 // 0). simulate's summary.json beside it names the model.
 TEST(LumpedCalibration, RefusesTheLumpedModelsOwnRuns) {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "libdem/BlockMotion.hpp"
 #include "libdem/SurfacePath.hpp"
@@ -81,10 +82,17 @@ Release drawRelease(const Scene& scene, std::uint64_t seed, const std::optional<
         const double reach = scene.blockTemplate().boundingRadius() + 0.5 * t.geometry.dbh;
         const Vec3 p(t.foot.x() - l.distance, t.foot.y() + l.eccentricity * reach, t.foot.z() + l.impactHeight);
         refuseOutside(p.x(), p.y(), "the launch start", ": move the tree (tree.x_m, tree.y_m) or shorten block.launch_distance_m");
-        if (p.z() - scene.blockTemplate().boundingRadius() < soil.surfaceHeight(p.x(), p.y()) + 0.01)
-            throw InputError(cfg.sourceFile, 0, "block.impact_height_m = " + std::to_string(l.impactHeight) +
-                                                    " m puts the block into the ground (its bounding radius is " +
-                                                    std::to_string(scene.blockTemplate().boundingRadius()) + " m)");
+        // The block as it is turned, not its bounding sphere: a cube flying on a face clears the
+        // ground from half its edge up (0.40 m for the 0.5 m3 cube, whose bounding radius is 0.54 m).
+        double below = 0;  // how far its lowest point reaches below its centre
+        for (const ClumpSphere& s : scene.blockTemplate().spheres()) below = std::max(below, s.radius - (q * s.offset).z());
+        if (p.z() - below < soil.surfaceHeight(p.x(), p.y()) + 0.01) {
+            std::ostringstream os;
+            os.precision(3);
+            os << "block.impact_height_m = " << l.impactHeight << " m puts the block into the ground: its lowest point is " << below
+               << " m below its centre";
+            throw InputError(cfg.sourceFile, 0, os.str());
+        }
         return {p, q, Vec3(l.speed, 0, 0)};
     }
     if (at) {

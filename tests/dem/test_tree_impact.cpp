@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "libdem/BlockRun.hpp"
+#include "libcommon/InputError.hpp"
 #include "libstand/Allometry.hpp"
 
 using namespace sylva::dem;
@@ -75,6 +76,23 @@ double elasticEnergyToBreak(double dbhCm, double h) {
 }
 
 }  // namespace
+
+// The launch is refused where the block as it flies would reach into the ground, not where its
+// bounding sphere would: the 0.5 m3 cube flies on a face, half its edge (0.397 m) below its centre,
+// within its 0.54 m bounding radius. 0.45 m up was refused, and it strikes the stem.
+TEST(TreeImpact, ALowLaunchIsRefusedByTheBlocksLowestPoint) {
+    const Scene scene(loadScene(std::string(SYLVAROCK_DATA) + "/scenes/single-tree.ini", {"tree.dbh_cm=20", "block.impact_height_m=0.45"}));
+    ASSERT_GT(scene.blockTemplate().boundingRadius(), 0.5);
+    EXPECT_EQ(launch({"tree.dbh_cm=20", "block.impact_height_m=0.45"}).impacts.size(), 1u);
+    try {
+        launch({"tree.dbh_cm=20", "block.impact_height_m=0.38"});
+        ADD_FAILURE() << "a launch 0.38 m up ran";
+    } catch (const sylva::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("block.impact_height_m = 0.38 m puts the block into the ground: its lowest point is 0.397 m below its centre"),
+                  std::string::npos)
+            << e.what();
+    }
+}
 
 TEST(TreeImpact, EnergyBudgetClosesWithinOnePercent) {
     // On the default trees and on the paper's: Eqs. 7-8's viscous damping and Eq. 20's elastic

@@ -1,6 +1,7 @@
 #include "libstand/PointPattern.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -47,6 +48,15 @@ Inventory readPointPattern(const std::string& csv, const Window& window) {
     }
     inv.hasDiameters = cDbh.has_value();
     inv.warnings = dataWarnings(inv, csv, "window");
+    // Diameters under another name were left out without a word (G and the DBH statistics "-").
+    if (!cDbh)
+        for (const std::string& name : t.header()) {
+            std::string lower(name);
+            std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+            if (lower.rfind("dbh", 0) == 0 || lower.rfind("diam", 0) == 0 || lower == "d" || lower == "bhd" || lower == "d_cm")
+                inv.warnings.push_back(csv + ": no column dbh_cm, so no G or DBH statistics; column '" + name +
+                                       "' may hold the diameters: name it dbh_cm if they are in cm");
+        }
     return inv;
 }
 

@@ -183,6 +183,18 @@ TEST(PointPatternReader, ReadsPointsWithAndWithoutDiameters) {
     EXPECT_EQ(b.stems.size(), 4u);
 }
 
+// Diameters under another name (dbh, diameter_cm) were left out unsaid: the pattern has no diameters
+// and says which column may hold them.
+TEST(PointPatternReader, DiametersUnderAnotherNameAreSaid) {
+    const std::string path = ::testing::TempDir() + "points_dbh_named_otherwise.csv";
+    std::ofstream(path) << "x,y,Diameter_cm\n1,1,20\n5,5,30\n";
+    const Inventory p = readPointPattern(path, Window::rectangle(0, 0, 10, 10));
+    EXPECT_FALSE(p.hasDiameters);
+    ASSERT_EQ(p.warnings.size(), 1u);
+    EXPECT_NE(p.warnings[0].find("column 'Diameter_cm' may hold the diameters: name it dbh_cm"), std::string::npos) << p.warnings[0];
+    EXPECT_TRUE(readPointPattern(data("points_no_dbh.csv"), Window::rectangle(0, 0, 10, 10)).warnings.empty());
+}
+
 TEST(PointPatternReader, PointOutsideTheWindow) {
     const Failure f = failureOf([] { readPointPattern(data("points_outside.csv"), Window::rectangle(0, 0, 10, 10)); });
     EXPECT_EQ(f.file, data("points_outside.csv"));

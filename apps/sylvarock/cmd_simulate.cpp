@@ -187,7 +187,19 @@ int runSimulate(int argc, const char* const* argv) {
     dem::writeRunsCsv(out + "/runs.csv", results);
     dem::writeSummaryJson(out + "/summary.json", s, wall, read->sceneFile, dem::toString(c.model));
     if (scene.forested()) dem::writeImpactsCsv(out + "/impacts.csv", results);
-    if (scene.config().launch.enabled) dem::writeImpactEnergyJson(out + "/energy.json", results.front());
+    if (scene.config().launch.enabled) {
+        dem::writeImpactEnergyJson(out + "/energy.json", results.front());
+        // A launch above the tree or wide of it passes by: energy.json then holds no impact to read.
+        const dem::RunResult& r = results.front();
+        if (r.reason != dem::StopReason::Failed && r.impacts.empty()) {
+            const auto& l = scene.config().launch;
+            std::ostringstream os;
+            os.precision(3);
+            os << "the block passed the tree without touching it (block.impact_height_m " << l.impactHeight << " m on a stem "
+               << scene.trees().tree(0).geometry.height << " m tall, block.eccentricity " << l.eccentricity << "): energy.json holds no impact";
+            std::cerr << "sylvarock simulate: warning: " << os.str() << "\n";
+        }
+    }
     if (c.run.recordTrajectory) dem::writeTrajectories(out + "/trajectories", results);
     if (read->figures) drawFigures(out, scene, results);
 

@@ -300,6 +300,20 @@ TEST(SimulateCli, AFailedSingleTreeRunSaysSoInItsEnergyFile) {
     EXPECT_NE(energy.find("\"failure\": \"integration.dt_s"), std::string::npos) << energy;
 }
 
+// A launch above the tree passes it by: energy.json holds no impact, and the run says so.
+TEST(SimulateCli, ALaunchThatMissesTheTreeIsSaid) {
+    const auto out = std::filesystem::temp_directory_path() / "sylvarock-tests" / "single-tree-missed";
+    std::filesystem::remove_all(out);
+    const auto r = sylva::testing::runCli(std::string("simulate --scene ") + SYLVAROCK_DATA +
+                                          "/scenes/single-tree.ini --set tree.dbh_cm=20 --set block.impact_height_m=20 --no-figures --out " +
+                                          out.string());
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("warning: the block passed the tree without touching it (block.impact_height_m 20 m on a stem 13.9 m tall"),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(slurp((out / "energy.json").string()).find("\"impacts\": 0"), std::string::npos);
+}
+
 // Validation (short form; SYLVAROCK_LONG_VALIDATION=1 runs 300 blocks): without forest, the stand-in
 // slope and Table 2 give the paper's Sect. 3.2: most blocks stop between 325 and 375 m along the
 // slope, energy lines between 25 and 32 deg, bounces mostly under 1 m, speeds of 10-15 m/s.

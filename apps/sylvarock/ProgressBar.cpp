@@ -13,11 +13,14 @@ ProgressBar::ProgressBar(bool terminal) : terminal_(terminal), start_(std::chron
 
 void ProgressBar::update(int done, int total, const std::string& label) {
     if (total <= 0) return;
+    // A count that goes back is a new pass (hazard's bare pass after its forest one): its own tenths
+    // and clock. Labels may change at every run (assess names the campaign each run belongs to).
+    if (done < lastDone_) lastTenth_ = 0, start_ = std::chrono::steady_clock::now();
+    lastDone_ = done;
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     const double left = done ? s * (total - done) / done : 0.0;
     const std::string named = label.empty() ? "" : " (" + label + ")";
     if (!terminal_) {
-        if (label != lastLabel_) lastLabel_ = label, lastTenth_ = 0;  // a campaign's next pass counts from 0
         const int tenth = static_cast<int>(10L * done / total);
         if (tenth == lastTenth_) return;
         lastTenth_ = tenth;

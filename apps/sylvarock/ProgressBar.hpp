@@ -16,8 +16,7 @@ public:
 private:
     bool terminal_;
     std::chrono::steady_clock::time_point start_;
-    int lastTenth_ = 0;
-    std::string lastLabel_;
+    int lastTenth_ = 0, lastDone_ = 0;
 };
 
 }  // namespace sylva::cli

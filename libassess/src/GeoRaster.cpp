@@ -5,7 +5,10 @@
 #include <gdal_priv.h>
 #include <ogr_spatialref.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <mutex>
 #include <sstream>
 #include <string>
@@ -32,25 +35,38 @@ void initGdal() {
 
 namespace {
 
-// GDAL's ESRI ASCII reader (AAIGrid) takes the grid's values as one stream of words and reads a word
-// it cannot parse as 0, without a word: a typo ('x', '5..2') in a DTM was a pit hundreds of metres
-// deep, and one value too many on a line shifted every cell after it by one. The text is checked
-// before GDAL's values are used: every word after the header a number, as many as the grid's cells,
-// and when the grid is laid out one row per line (as every writer does), `columns` on each line.
-void requireWellFormedAsciiGrid(const std::string& path, int columns, int rows) {
+// GDAL's ESRI ASCII reader (AAIGrid) takes the grid's values as one stream of words and reads what it
+// can of each without a word: a typo ('x', '5..2') in a DTM read as 0 or 5, a pit or a step in the
+// slope; a 'nan' in a grid of whole numbers (which GDAL reads as integers) read as 0; one value too
+// many on a line shifted every cell after it by one. The text is checked before GDAL's values are
+// used: after the header's keywords, every word a number (a whole one in an integer grid), as many
+// as the grid's cells, and when the grid is laid out one row per line (as every writer does),
+// `columns` on each line.
+void requireWellFormedAsciiGrid(const std::string& path, int columns, int rows, bool integers) {
     VSILFILE* f = VSIFOpenL(path.c_str(), "rb");
     if (!f) throw InputError(path, 0, "cannot open file");
     struct Closer {
         VSILFILE* f;
         ~Closer() { VSIFCloseL(f); }
     } closer{f};
-    const auto number = [](const std::string& word) {
+    const auto number = [integers](const std::string& word) {
+        if (integers) {
+            char* end = nullptr;
+            std::strtol(word.c_str(), &end, 10);
+            return end != word.c_str() && *end == '\0';
+        }
         // GDAL reads a decimal point or a decimal comma; anything else left over is not its number.
         for (const char point : {'.', ','}) {
             char* end = nullptr;
             CPLStrtodDelim(word.c_str(), &end, point);
             if (end != word.c_str() && *end == '\0') return true;
         }
+        return false;
+    };
+    const auto headerKey = [](std::string word) {
+        std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        for (const char* key : {"ncols", "nrows", "xllcorner", "yllcorner", "xllcenter", "yllcenter", "cellsize", "dx", "dy", "nodata_value"})
+            if (word == key) return true;
         return false;
     };
     long lineNo = 0, values = 0;
@@ -62,17 +78,20 @@ void requireWellFormedAsciiGrid(const std::string& path, int columns, int rows) 
         std::string word;
         long onLine = 0;
         for (int i = 0; words >> word; ++i) {
-            if (inHeader && i == 0 && !number(word)) break;  // a header line: "ncols 126"
+            if (inHeader && i == 0 && headerKey(word)) break;  // "ncols 126"
             inHeader = false;
             if (!number(word))
-                throw InputError(path, lineNo, "value " + std::to_string(onLine + 1) + " of the line, '" + word +
-                                                   "', is not a number (GDAL would read it as 0)");
+                throw InputError(path, lineNo, "value " + std::to_string(onLine + 1) + " of the line, '" + word + "', is not " +
+                                                   (integers ? "a whole number (this grid's values are whole numbers, read as integers)" : "a number"));
             ++onLine;
         }
         if (onLine > 0) lineCounts.emplace_back(lineNo, onLine), values += onLine;
     }
     const long cells = static_cast<long>(columns) * rows;
-    if (static_cast<long>(lineCounts.size()) == rows)
+    // A stream wrapped at a fixed width (each line but the last as long) may by chance have nrows lines.
+    bool wrapped = lineCounts.size() > 1 && lineCounts.front().second != columns;
+    for (std::size_t r = 1; wrapped && r + 1 < lineCounts.size(); ++r) wrapped = lineCounts[r].second == lineCounts.front().second;
+    if (static_cast<long>(lineCounts.size()) == rows && !wrapped)
         for (std::size_t r = 0; r < lineCounts.size(); ++r)
             if (lineCounts[r].second != columns)
                 throw InputError(path, lineCounts[r].first,
@@ -135,7 +154,8 @@ GeoRaster readRaster(const std::string& path, const std::string& values) {
     if (valueBands > 1)
         throw InputError(path, 0, "the raster has " + std::to_string(valueBands) + " bands of values (an image? a coloured hillshade?): " +
                                       values + " are one band; give that band alone (gdal_translate -b N)");
-    if (std::string(ds->GetDriver()->GetDescription()) == "AAIGrid") requireWellFormedAsciiGrid(path, g.columns, g.rows);
+    if (std::string(ds->GetDriver()->GetDescription()) == "AAIGrid")
+        requireWellFormedAsciiGrid(path, g.columns, g.rows, GDALDataTypeIsInteger(ds->GetRasterBand(1)->GetRasterDataType()));
     GDALRasterBand* band = ds->GetRasterBand(1);
     std::vector<double>& z = raster.values;
     z.resize(static_cast<std::size_t>(g.columns) * g.rows);

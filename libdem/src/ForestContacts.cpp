@@ -150,8 +150,10 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
 }
 
 // Pairs of connections of different awake stems, or of two pieces of a broken one, that may touch:
-// within their radii plus the skin of each other when listed. The list holds until some node has moved half the skin (then no pair
-// left out can have closed the skin) or the awake stems change.
+// within their radii plus the skin of each other when listed. The list holds until some node has
+// moved half the skin (then no pair left out can have closed the skin), the awake stems change or a
+// connection breaks. A node between two broken connections has no connection left to touch with:
+// a fragment that small falls through stems (docs/model-stems.md).
 void ForestMotion::listStemPairs() {
     stemPairs_.clear();
     // Boxes around each awake stem's nodes, widened by its thickest radius and the skin: most pairs

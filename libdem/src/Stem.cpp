@@ -196,6 +196,7 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         if (k.bending.broken()) {
             // M_Rupt reached: resistance lost along all axes
             ledger.rupture += w.released + linear + k.damping.release();
+            ++breaks_;
             continue;
         }
         stored += linear + k.bending.storedEnergy();

@@ -173,18 +173,29 @@ TEST_F(Hazard, DtmReadingErrorsNameTheFile) {
 TEST_F(Hazard, AMalformedAsciiGridIsRefusedAtItsLine) {
     const std::string header = "ncols 3\nnrows 3\nxllcorner 0\nyllcorner 0\ncellsize 5\nNODATA_value -9999\n";
     const auto refusal = [&](const std::string& name, const std::string& rows) { return errorOf([&] { readDtm(write(name, header + rows)); }); };
-    EXPECT_NE(refusal("typo.asc", "30 20 10\n31 2x 11\n32 22 12\n").find("typo.asc:8: value 2 of the line, '2x', is not a number"), std::string::npos)
+    EXPECT_NE(refusal("typo.asc", "30 20 10\n31 2x 11\n32 22 12\n").find("typo.asc:8: value 2 of the line, '2x', is not a whole number"), std::string::npos)
         << refusal("typo.asc", "30 20 10\n31 2x 11\n32 22 12\n");
     EXPECT_NE(refusal("extra.asc", "30 20 10\n31 21 11 99\n32 22\n").find("extra.asc:8: row 2 has 4 values, ncols = 3"), std::string::npos)
         << refusal("extra.asc", "30 20 10\n31 21 11 99\n32 22\n");
     EXPECT_NE(refusal("long.asc", "30 20 10\n31 21 11\n32 22 12\n33\n").find("long.asc:10: 10 values for a grid of ncols x nrows = 3 x 3"),
               std::string::npos)
         << refusal("long.asc", "30 20 10\n31 21 11\n32 22 12\n33\n");
-    // Rows wrapped over lines, a decimal comma and a NODATA cell are what GDAL reads as meant.
+    // A grid of whole numbers GDAL reads as integers: 'nan' there was 0 m; in a grid of decimals, a word
+    // GDAL reads part of (2..5 as 2); a first row starting with a letter was taken for the header.
+    EXPECT_NE(refusal("nan.asc", "30 20 10\n31 nan 11\n32 22 12\n").find("nan.asc:8: value 2 of the line, 'nan', is not a whole number"),
+              std::string::npos);
+    EXPECT_NE(refusal("dots.asc", "30.5 20 10\n31 2..5 11\n32 22 12\n").find("dots.asc:8: value 2 of the line, '2..5', is not a number"),
+              std::string::npos);
+    EXPECT_NE(refusal("letter.asc", "x30 20 10\n31 21 11\n32 22 12\n").find("letter.asc:7: value 1 of the line, 'x30', is not"), std::string::npos)
+        << refusal("letter.asc", "x30 20 10\n31 21 11\n32 22 12\n");
+    // Rows wrapped over lines, a decimal comma and a NODATA cell are what GDAL reads as meant; so is a
+    // stream wrapped at a fixed width that happens to have nrows lines.
     const GeoRaster wrapped = readRaster(write("wrapped.asc", header + "30 20 10 31\n21 11 32 22,5 -9999\n"), "heights");
     EXPECT_DOUBLE_EQ(wrapped.values[wrapped.grid.index(0, 0)], 30);  // row 0: the north one
     EXPECT_DOUBLE_EQ(wrapped.values[wrapped.grid.index(1, 2)], 22.5);
     EXPECT_TRUE(std::isnan(wrapped.values[wrapped.grid.index(2, 2)]));
+    const GeoRaster fixedWidth = readRaster(write("width4.asc", header + "30 20 10 31\n21 11 32 22\n12\n"), "heights");
+    EXPECT_DOUBLE_EQ(fixedWidth.values[fixedWidth.grid.index(2, 2)], 12);
 }
 
 // The simulator works in metres: a DTM in degrees is refused, and so are absurd cells.

@@ -77,6 +77,7 @@ private:
         StableStep stability;  // its own springs' (Stem::stability)
         double lastBlockContact;  // time of the last block contact (or of waking)
         bool broken;              // some connection broken or the root plate gone: its pieces fall
+        std::size_t breaksSeen = 0;  // its broken connections when its stability and the stem pairs were last made
         bool moving;              // stepped: set by a touch of the block or of a moving stem, cleared
                                   // when it rests; until then it stands still, is not stepped and
                                   // does not limit the time step

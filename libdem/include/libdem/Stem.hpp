@@ -69,11 +69,9 @@ public:
     double connectionDiameter(std::size_t c) const { return connections_[c].diameter; }  // D_con, between nodes c and c+1
     const ConnectionBeam& bending(std::size_t c) const { return connections_[c].bending; }
     bool broken(std::size_t c) const { return connections_[c].bending.broken(); }
-    bool anyConnectionBroken() const {
-        for (const auto& c : connections_)
-            if (c.bending.broken()) return true;
-        return false;
-    }
+    bool anyConnectionBroken() const { return breaks_ > 0; }
+    // How many connections have broken: a new break makes new pieces (and new pairs of them to touch).
+    std::size_t breaks() const { return breaks_; }
     // Rest height above the foot of the middle of the lowest broken connection (NaN if none): a
     // whipped top that snaps is not a stem broken at its foot.
     double lowestBreakHeight() const;
@@ -120,6 +118,7 @@ private:
     std::vector<Connection> connections_;
     RootSpring root_;
     double elasticEnergy_ = 0;
+    std::size_t breaks_ = 0;  // connections broken (updateConnections counts them as they break)
 };
 
 }  // namespace sylva::dem

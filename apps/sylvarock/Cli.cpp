@@ -140,6 +140,9 @@ std::vector<double> numberList(const std::string& option, const std::string& tex
             throw InputError("--" + option + ": '" + item + "' is not a number (expected a comma-separated list)");
         out.push_back(v);
     }
+    // getline drops the empty word after a last comma: "130,0,630,200," read as four numbers.
+    if (text.empty() || text.back() == ',')
+        throw InputError("--" + option + ": '" + text + "' ends without a number (expected a comma-separated list)");
     if (n != 0 && out.size() != n)
         throw InputError("--" + option + ": expected " + std::to_string(n) + " comma-separated numbers, got " +
                          std::to_string(out.size()) + " in '" + text + "'");

@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
             std::cerr << "sylvarock " << c.name << ": error: " << e.what() << "\n";
             return 2;
         } catch (const boost::program_options::error& e) {
-            std::cerr << "sylvarock " << c.name << ": " << sylva::optionErrorMessage(e) << " (see sylvarock " << c.name
+            std::cerr << "sylvarock " << c.name << ": error: " << sylva::optionErrorMessage(e) << " (see sylvarock " << c.name
                       << " --help)\n";
             return 2;
         } catch (const std::filesystem::filesystem_error& e) {
@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
             return 1;
         }
     }
-    std::cerr << "sylvarock: unknown command '" << argv[1] << "'\n\n";
+    std::cerr << "sylvarock: error: unknown command '" << argv[1] << "'\n\n";
     printUsage(std::cerr);
     return 2;
 }

@@ -46,6 +46,17 @@ TEST(CliHelp, NoCommandOrAnUnknownOneIsAUsageError) {
     EXPECT_EQ(runCli("").status, 2);
     const auto unknown = runCli("simulat");
     EXPECT_EQ(unknown.status, 2) << unknown.output;
+    EXPECT_NE(unknown.output.find("sylvarock: error: unknown command 'simulat'"), std::string::npos) << unknown.output;
+}
+
+// A refused option says "error:" as every other refusal does, so that a script grepping for it finds it.
+TEST(CliHelp, AnUnknownOptionIsAnErrorForEveryCommand) {
+    for (const auto& name : listedCommands(runCli("--help").output)) {
+        const auto bogus = runCli(name + " --bogus");
+        EXPECT_EQ(bogus.status, 2) << name << ":\n" << bogus.output;
+        EXPECT_NE(bogus.output.find("sylvarock " + name + ": error: unrecognised option '--bogus'"), std::string::npos)
+            << name << ":\n" << bogus.output;
+    }
 }
 
 // A word no option takes is refused, not dropped: "--runs 2 000" once ran 2 runs without a word.

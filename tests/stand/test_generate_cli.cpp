@@ -76,6 +76,10 @@ TEST(GenerateCli, BadOptionsExitWithStatusTwoAndSayWhy) {
     r = generate("--structure random --extent 0,0,100" + out);
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.output.find("expected 4"), std::string::npos) << r.output;
+    // A last comma once went unnoticed (getline drops the empty word after it).
+    r = generate("--structure random --extent 0,0,100,50," + out);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("--extent: '0,0,100,50,' ends without a number"), std::string::npos) << r.output;
     r = generate("--structure random --extent 0,0,100,50 --realisations 0" + out);
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.output.find("--realisations"), std::string::npos) << r.output;

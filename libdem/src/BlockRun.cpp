@@ -70,10 +70,17 @@ Release drawRelease(const Scene& scene, std::uint64_t seed, const std::optional<
         q = Eigen::AngleAxisd(az, Vec3::UnitZ()) * Eigen::AngleAxisd(ay, Vec3::UnitY()) * Eigen::AngleAxisd(ax, Vec3::UnitX());
     }
     const SoilBed& soil = scene.soil();
-    auto refuseOutside = [&](double x, double y, const std::string& what, const std::string& remedy) {
-        if (x < soil.xmin() || x > soil.xmax() || y < soil.ymin() || y > soil.ymax())
-            throw InputError(cfg.sourceFile, 0, what + " (" + std::to_string(x) + ", " + std::to_string(y) +
-                                                    ") is outside the terrain" + remedy);
+    // Named by the keys that placed the coordinate that is out; a point given by the caller
+    // (--release-at, a hazard cell) by none.
+    auto refuseOutside = [&](double x, double y, const std::string& what, const std::string& remedy,
+                             std::initializer_list<const char*> xKeys, std::initializer_list<const char*> yKeys) {
+        const bool xOut = x < soil.xmin() || x > soil.xmax(), yOut = y < soil.ymin() || y > soil.ymax();
+        if (!xOut && !yOut) return;
+        const std::string message = what + " (" + readableNumber(x) + ", " + readableNumber(y) + ") is outside the terrain (x in [" +
+                                    readableNumber(soil.xmin()) + ", " + readableNumber(soil.xmax()) + "], y in [" +
+                                    readableNumber(soil.ymin()) + ", " + readableNumber(soil.ymax()) + "])" + remedy;
+        const auto keys = xOut ? xKeys : yKeys;
+        throw keys.size() ? cfg.refusal(keys, message) : InputError(message);
     };
     if (cfg.launch.enabled) {
         // At the tree, from upslope: the block's centre at the impact height, offset across its path.
@@ -81,7 +88,8 @@ Release drawRelease(const Scene& scene, std::uint64_t seed, const std::optional<
         const PlacedTree& t = scene.trees().tree(0);
         const double reach = scene.blockTemplate().boundingRadius() + 0.5 * t.geometry.dbh;
         const Vec3 p(t.foot.x() - l.distance, t.foot.y() + l.eccentricity * reach, t.foot.z() + l.impactHeight);
-        refuseOutside(p.x(), p.y(), "the launch start", ": move the tree (tree.x_m, tree.y_m) or shorten block.launch_distance_m");
+        refuseOutside(p.x(), p.y(), "the launch start", ": move the tree (tree.x_m, tree.y_m) or shorten block.launch_distance_m",
+                      {"tree.x_m", "block.launch_distance_m"}, {"tree.y_m", "block.eccentricity"});
         // The block as it is turned, not its bounding sphere: a cube flying on a face clears the
         // ground from half its edge up (0.40 m for the 0.5 m3 cube, whose bounding radius is 0.54 m).
         double below = 0;  // how far its lowest point reaches below its centre
@@ -91,16 +99,16 @@ Release drawRelease(const Scene& scene, std::uint64_t seed, const std::optional<
             os.precision(3);
             os << "block.impact_height_m = " << l.impactHeight << " m puts the block into the ground: its lowest point is " << below
                << " m below its centre";
-            throw InputError(cfg.sourceFile, 0, os.str());
+            throw cfg.refusal({"block.impact_height_m"}, os.str());
         }
         return {p, q, Vec3(l.speed, 0, 0)};
     }
     if (at) {
-        refuseOutside(at->x(), at->y(), "release point", "");
+        refuseOutside(at->x(), at->y(), "release point", "", {}, {});
         return {Vec3(at->x(), at->y(), soil.surfaceHeight(at->x(), at->y()) + rel.fallHeight), q};
     }
     const double y = rel.yMax > rel.yMin ? rng.uniform(rel.yMin, rel.yMax) : rel.yMin;
-    refuseOutside(rel.x, y, "release point", "");
+    refuseOutside(rel.x, y, "release point", "", {"release.x_m"}, {"release.y_m", "release.y_min_m", "release.y_max_m"});
     return {Vec3(rel.x, y, soil.surfaceHeight(rel.x, y) + rel.fallHeight), q};
 }
 

@@ -383,6 +383,7 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
         }
         c.sourceFile = *path;
     }
+    c.setKeys = fromSet;
     po::notify(vm);
     checkRanges(keys.table, vm, fromSet, path, fileText);
     const auto refuse = [&](const std::string& key, const std::string& what) { return keyError(key, what, fromSet, path, fileText); };
@@ -495,6 +496,12 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
 }
 
 }  // namespace
+
+InputError SceneConfig::refusal(std::initializer_list<const char*> keys, const std::string& what) const {
+    for (const char* key : keys)
+        if (setKeys.count(key)) return InputError("--set " + std::string(key) + ": " + what);
+    return InputError(sourceFile, 0, what);
+}
 
 SceneConfig loadScene(const std::string& path, const std::vector<std::string>& overrides) { return load(&path, overrides); }
 

@@ -373,14 +373,16 @@ TEST(ExtremeRelease, ASoilSpringThatCannotHoldTheBlockIsRefusedByName) {
 }
 
 TEST(ExtremeRelease, ReleaseOutsideTheTerrainIsRefused) {
-    for (const char* where : {"release.x_m=100", "release.y_m=-5"}) {
+    // Named by the --set that placed it (the scene file was blamed), with the terrain's bounds.
+    for (const auto& [where, says] : {std::pair<const char*, const char*>{"release.x_m=100", "--set release.x_m: release point (100, "},
+                                      {"release.y_m=-5", "--set release.y_m: release point ("}}) {
         const SceneConfig c = flatGround({where});
         const std::string m = messageOf<sylva::InputError>([&] { run(c); });
-        EXPECT_TRUE(mentions(m, "outside the terrain")) << where << ": " << m;
+        EXPECT_TRUE(mentions(m, says) && mentions(m, "is outside the terrain (x in [0, ")) << where << ": " << m;
     }
     // A launch 1.5 m before a tree standing 0.5 m from the terrain's edge.
     const std::string m = messageOf<sylva::InputError>([] { run(singleTree({"tree.x_m=0.5"})); });
-    EXPECT_TRUE(mentions(m, "outside the terrain") && mentions(m, "block.launch_distance_m")) << m;
+    EXPECT_TRUE(mentions(m, "--set tree.x_m: the launch start") && mentions(m, "block.launch_distance_m")) << m;
 }
 
 // A forest in another frame (map coordinates on a local slope): the message leads to the line.

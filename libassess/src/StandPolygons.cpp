@@ -166,6 +166,13 @@ StandForest readStandPolygons(const std::string& path, const Dtm& dtm, std::uint
                 throw InputError(path, 0, where + " (stand " + s.inventory + ") lies outside the terrain, which spans the DTM's cell centres " +
                                               readableNumber(lo.x()) + ".." + readableNumber(hi.x()) + " x " + readableNumber(lo.y()) + ".." +
                                               readableNumber(hi.y()));
+            // Cut silently, a stand drawn past the DTM's edge lost its forest there without a word.
+            const double beyond = areaOf(*g) - areaOf(*cut);
+            if (beyond > kOverlapToleranceM2)
+                out.notes.push_back(path + ": " + where + " (stand " + s.inventory + "): " + readableNumber(std::round(beyond)) + " m2 of its " +
+                                    readableNumber(std::round(areaOf(*g))) + " m2 lie beyond the terrain (the DTM's cell centres " +
+                                    readableNumber(lo.x()) + ".." + readableNumber(hi.x()) + " x " + readableNumber(lo.y()) + ".." +
+                                    readableNumber(hi.y()) + ") and are left without trees");
             for (std::size_t k = 0; k < onTerrain.size(); ++k) {
                 std::unique_ptr<OGRGeometry> both(onTerrain[k]->Intersection(cut.get()));
                 if (both && areaOf(*both) > kOverlapToleranceM2)

@@ -1098,6 +1098,12 @@ TEST_F(StandPolygons, PolygonsAreCutToTheTerrainAndInventoriesFoundBesideTheFile
     EXPECT_EQ(f.polygons[0].structure, stand::ForestStructure::Aggregated);
     ASSERT_FALSE(f.notes.empty());
     EXPECT_NE(f.notes.front().find("aggregated (A)"), std::string::npos);
+    // What was cut is said: 150 x 300 m drawn, 97.5 x 195 m of it on the terrain.
+    const auto cut = std::find_if(f.notes.begin(), f.notes.end(), [](const std::string& n) { return n.find("beyond the terrain") != std::string::npos; });
+    ASSERT_NE(cut, f.notes.end());
+    EXPECT_NE(cut->find("MO1): 25988 m2 of its 45000 m2 lie beyond the terrain (the DTM's cell centres 2.5..297.5 x 2.5..197.5)"),
+              std::string::npos)
+        << *cut;
     for (const auto& t : f.forest.trees) ASSERT_TRUE(t.x >= 2.5 && t.x <= 100 && t.y >= 2.5 && t.y <= 197.5);
 }
 

@@ -115,16 +115,20 @@ bool holdsPolygons(OGRLayer& layer) {
 StandForest readStandPolygons(const std::string& path, const Dtm& dtm, std::uint64_t seed, double tipDiameter) {
     GDALDatasetUniquePtr ds = openVectorFile(path);
     const Eigen::Vector2d lo = dtm.grid.centre(0, dtm.grid.rows - 1), hi = dtm.grid.centre(dtm.grid.columns - 1, 0);
-    OGRPolygon terrain;
-    {
+    const Eigen::Vector2d halfCell(0.5 * std::abs(dtm.grid.geoTransform[1]), 0.5 * std::abs(dtm.grid.geoTransform[5]));
+    const Eigen::Vector2d outerLo = lo - halfCell, outerHi = hi + halfCell;
+    const auto rectangle = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+        OGRPolygon p;
         OGRLinearRing r;
-        r.addPoint(lo.x(), lo.y());
-        r.addPoint(hi.x(), lo.y());
-        r.addPoint(hi.x(), hi.y());
-        r.addPoint(lo.x(), hi.y());
-        r.addPoint(lo.x(), lo.y());
-        terrain.addRing(&r);
-    }
+        r.addPoint(a.x(), a.y());
+        r.addPoint(b.x(), a.y());
+        r.addPoint(b.x(), b.y());
+        r.addPoint(a.x(), b.y());
+        r.addPoint(a.x(), a.y());
+        p.addRing(&r);
+        return p;
+    };
+    const OGRPolygon terrain = rectangle(lo, hi), outline = rectangle(outerLo, outerHi);
     StandForest out;
     out.forest.source = path;
     std::map<std::string, std::unique_ptr<stand::StandCatalogue>> catalogues;
@@ -166,13 +170,16 @@ StandForest readStandPolygons(const std::string& path, const Dtm& dtm, std::uint
                 throw InputError(path, 0, where + " (stand " + s.inventory + ") lies outside the terrain, which spans the DTM's cell centres " +
                                               readableNumber(lo.x()) + ".." + readableNumber(hi.x()) + " x " + readableNumber(lo.y()) + ".." +
                                               readableNumber(hi.y()));
-            // Cut silently, a stand drawn past the DTM's edge lost its forest there without a word.
-            const double beyond = areaOf(*g) - areaOf(*cut);
+            // Cut silently, a stand drawn past the DTM's edge lost its forest there without a word. Past
+            // its outer edge, not its cell centres: a stand drawn to the edge loses a half-cell strip, as
+            // every forest on a DTM does.
+            std::unique_ptr<OGRGeometry> onDtm(g->Intersection(&outline));
+            const double beyond = areaOf(*g) - (onDtm ? areaOf(*onDtm) : 0.0);
             if (beyond > kOverlapToleranceM2)
                 out.notes.push_back(path + ": " + where + " (stand " + s.inventory + "): " + readableNumber(std::round(beyond)) + " m2 of its " +
-                                    readableNumber(std::round(areaOf(*g))) + " m2 lie beyond the terrain (the DTM's cell centres " +
-                                    readableNumber(lo.x()) + ".." + readableNumber(hi.x()) + " x " + readableNumber(lo.y()) + ".." +
-                                    readableNumber(hi.y()) + ") and are left without trees");
+                                    readableNumber(std::round(areaOf(*g))) + " m2 lie beyond the DTM (" + readableNumber(outerLo.x()) + ".." +
+                                    readableNumber(outerHi.x()) + " x " + readableNumber(outerLo.y()) + ".." + readableNumber(outerHi.y()) +
+                                    ") and are left without trees");
             for (std::size_t k = 0; k < onTerrain.size(); ++k) {
                 std::unique_ptr<OGRGeometry> both(onTerrain[k]->Intersection(cut.get()));
                 if (both && areaOf(*both) > kOverlapToleranceM2)

@@ -70,17 +70,18 @@ Release drawRelease(const Scene& scene, std::uint64_t seed, const std::optional<
         q = Eigen::AngleAxisd(az, Vec3::UnitZ()) * Eigen::AngleAxisd(ay, Vec3::UnitY()) * Eigen::AngleAxisd(ax, Vec3::UnitX());
     }
     const SoilBed& soil = scene.soil();
-    // Named by the keys that placed the coordinate that is out; a point given by the caller
+    // Named by the keys that placed the coordinates that are out; a point given by the caller
     // (--release-at, a hazard cell) by none.
     auto refuseOutside = [&](double x, double y, const std::string& what, const std::string& remedy,
-                             std::initializer_list<const char*> xKeys, std::initializer_list<const char*> yKeys) {
+                             std::vector<const char*> xKeys, const std::vector<const char*>& yKeys) {
         const bool xOut = x < soil.xmin() || x > soil.xmax(), yOut = y < soil.ymin() || y > soil.ymax();
         if (!xOut && !yOut) return;
         const std::string message = what + " (" + readableNumber(x) + ", " + readableNumber(y) + ") is outside the terrain (x in [" +
                                     readableNumber(soil.xmin()) + ", " + readableNumber(soil.xmax()) + "], y in [" +
                                     readableNumber(soil.ymin()) + ", " + readableNumber(soil.ymax()) + "])" + remedy;
-        const auto keys = xOut ? xKeys : yKeys;
-        throw keys.size() ? cfg.refusal(keys, message) : InputError(message);
+        if (!xOut) xKeys.clear();
+        if (yOut) xKeys.insert(xKeys.end(), yKeys.begin(), yKeys.end());
+        throw xKeys.empty() ? InputError(message) : cfg.refusal(xKeys, message);
     };
     if (cfg.launch.enabled) {
         // At the tree, from upslope: the block's centre at the impact height, offset across its path.
@@ -108,7 +109,12 @@ Release drawRelease(const Scene& scene, std::uint64_t seed, const std::optional<
         return {Vec3(at->x(), at->y(), soil.surfaceHeight(at->x(), at->y()) + rel.fallHeight), q};
     }
     const double y = rel.yMax > rel.yMin ? rng.uniform(rel.yMin, rel.yMax) : rel.yMin;
-    refuseOutside(rel.x, y, "release point", "", {"release.x_m"}, {"release.y_m", "release.y_min_m", "release.y_max_m"});
+    // y: the scene's range if it gives one, else a forest's (Scene's constructor), else release.y_m.
+    const bool forestRange = !rel.yRangeGiven && !scene.forest().trees.empty();
+    refuseOutside(rel.x, y, "release point", "", {"release.x_m"},
+                  rel.yRangeGiven ? std::vector<const char*>{"release.y_min_m", "release.y_max_m", "release.y_m"}
+                  : forestRange   ? std::vector<const char*>{"release.forest_y_min_m", "release.forest_y_max_m"}
+                                  : std::vector<const char*>{"release.y_m"});
     return {Vec3(rel.x, y, soil.surfaceHeight(rel.x, y) + rel.fallHeight), q};
 }
 

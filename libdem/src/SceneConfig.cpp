@@ -382,6 +382,7 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
             throw InputError(*path, line, message);
         }
         c.sourceFile = *path;
+        c.sourceText = fileText;
     }
     c.setKeys = fromSet;
     po::notify(vm);
@@ -497,9 +498,11 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
 
 }  // namespace
 
-InputError SceneConfig::refusal(std::initializer_list<const char*> keys, const std::string& what) const {
-    for (const char* key : keys)
+InputError SceneConfig::refusal(const std::vector<const char*>& keys, const std::string& what) const {
+    for (const char* key : keys) {
         if (setKeys.count(key)) return InputError("--set " + std::string(key) + ": " + what);
+        if (const long line = lineOf(sourceText, key)) return InputError(sourceFile, line, what);
+    }
     return InputError(sourceFile, 0, what);
 }
 

@@ -1098,12 +1098,15 @@ TEST_F(StandPolygons, PolygonsAreCutToTheTerrainAndInventoriesFoundBesideTheFile
     EXPECT_EQ(f.polygons[0].structure, stand::ForestStructure::Aggregated);
     ASSERT_FALSE(f.notes.empty());
     EXPECT_NE(f.notes.front().find("aggregated (A)"), std::string::npos);
-    // What was cut is said: 150 x 300 m drawn, 97.5 x 195 m of it on the terrain.
-    const auto cut = std::find_if(f.notes.begin(), f.notes.end(), [](const std::string& n) { return n.find("beyond the terrain") != std::string::npos; });
-    ASSERT_NE(cut, f.notes.end());
-    EXPECT_NE(cut->find("MO1): 25988 m2 of its 45000 m2 lie beyond the terrain (the DTM's cell centres 2.5..297.5 x 2.5..197.5)"),
-              std::string::npos)
-        << *cut;
+    // What was cut is said: 150 x 300 m drawn, 100 x 200 m of it on the DTM (0..300 x 0..200).
+    const auto said = [](const StandForest& forest) {
+        return std::find_if(forest.notes.begin(), forest.notes.end(), [](const std::string& n) { return n.find("beyond the DTM") != std::string::npos; });
+    };
+    ASSERT_NE(said(f), f.notes.end());
+    EXPECT_NE(said(f)->find("MO1): 25000 m2 of its 45000 m2 lie beyond the DTM (0..300 x 0..200)"), std::string::npos) << *said(f);
+    // Drawn to the DTM's edge, it loses only the half-cell strip outside the cell centres, as every forest does: nothing said.
+    const StandForest edge = readStandPolygons(stands({{"{\"stand\": \"MO1\"}", {{{0, 0}, {100, 0}, {100, 200}, {0, 200}, {0, 0}}}}}), d, 1, kTip);
+    EXPECT_EQ(said(edge), edge.notes.end()) << *said(edge);
     for (const auto& t : f.forest.trees) ASSERT_TRUE(t.x >= 2.5 && t.x <= 100 && t.y >= 2.5 && t.y <= 197.5);
 }
 

@@ -1,6 +1,5 @@
 #pragma once
 // Everything a scene file sets. Defaults are the paper's Table 2 and Sect. 2.3.2.
-#include <initializer_list>
 #include <set>
 #include <string>
 #include <vector>
@@ -84,11 +83,12 @@ struct ForestActivity {
 
 struct SceneConfig {
     std::string sourceFile;     // the scene file, for messages
+    std::string sourceText;     // its text, for the line of a key a refusal names
     std::set<std::string> setKeys;  // the keys --set gave, which a refusal names instead of the file
 
     // A refusal of what these keys set, found after loading (a release outside the terrain): it names
-    // the first of them --set gave, or else the scene file.
-    InputError refusal(std::initializer_list<const char*> keys, const std::string& what) const;
+    // the first of them given, by --set or on its line of the scene file.
+    InputError refusal(const std::vector<const char*>& keys, const std::string& what) const;
     TerrainConfig terrain;
     std::string forestFile;     // forest CSV (sylvarock generate's, or x,y,dbh_cm[,stool]); empty: no forest
     std::string stemParameters = "calibrated";  // the named set the stem's defaults came from

@@ -499,10 +499,12 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
 }  // namespace
 
 InputError SceneConfig::refusal(const std::vector<const char*>& keys, const std::string& what) const {
-    for (const char* key : keys) {
+    // --set first: what the user changed last is the likelier cause (a launch distance set too long
+    // names that, not the tree's position in the file).
+    for (const char* key : keys)
         if (setKeys.count(key)) return InputError("--set " + std::string(key) + ": " + what);
+    for (const char* key : keys)
         if (const long line = lineOf(sourceText, key)) return InputError(sourceFile, line, what);
-    }
     return InputError(sourceFile, 0, what);
 }
 

@@ -380,16 +380,20 @@ TEST(ExtremeRelease, ReleaseOutsideTheTerrainIsRefused) {
         const std::string m = messageOf<sylva::InputError>([&] { run(c); });
         EXPECT_TRUE(mentions(m, says) && mentions(m, "is outside the terrain (x in [0, ")) << where << ": " << m;
     }
-    // A y drawn from the scene's range is the range's; with both coordinates out, x's.
+    // A y drawn from the scene's range is the range's; with both coordinates out, x's first.
     const std::string range = messageOf<sylva::InputError>([] { run(flatGround({"release.y_min_m=300", "release.y_max_m=400"})); });
     EXPECT_TRUE(mentions(range, "--set release.y_min_m: release point (30, ")) << range;
     const std::string both = messageOf<sylva::InputError>([] { run(flatGround({"release.x_m=100", "release.y_m=500"})); });
     EXPECT_TRUE(mentions(both, "--set release.x_m: release point (100, 500)")) << both;
-    // From the scene file: its line (x's, given there, before y's, given by --set).
+    // From the scene file: its line; a --set among the keys is named first, as the likelier cause.
     const std::string path = ::testing::TempDir() + "release_outside.ini";
     std::ofstream(path) << "[terrain]\nprofile = " << SYLVAROCK_DATA << "/slopes/flat.csv\nwidth_m = 20\n\n[release]\nx_m = 1000\ny_m = 10\n";
-    const std::string file = messageOf<sylva::InputError>([&] { run(loadScene(path, {"release.y_m=500"})); });
-    EXPECT_TRUE(mentions(file, path + ":6: release point (1000, 500)")) << file;
+    const std::string file = messageOf<sylva::InputError>([&] { run(loadScene(path)); });
+    EXPECT_TRUE(mentions(file, path + ":6: release point (1000, 10)")) << file;
+    const std::string set = messageOf<sylva::InputError>([&] { run(loadScene(path, {"release.y_m=500"})); });
+    EXPECT_TRUE(mentions(set, "--set release.y_m: release point (1000, 500)")) << set;
+    const std::string launch = messageOf<sylva::InputError>([] { run(singleTree({"block.launch_distance_m=100"})); });
+    EXPECT_TRUE(mentions(launch, "--set block.launch_distance_m: the launch start")) << launch;
     // A launch 1.5 m before a tree standing 0.5 m from the terrain's edge.
     const std::string m = messageOf<sylva::InputError>([] { run(singleTree({"tree.x_m=0.5"})); });
     EXPECT_TRUE(mentions(m, "--set tree.x_m: the launch start") && mentions(m, "block.launch_distance_m")) << m;

@@ -87,7 +87,7 @@ struct SceneConfig {
     std::set<std::string> setKeys;  // the keys --set gave, which a refusal names instead of the file
 
     // A refusal of what these keys set, found after loading (a release outside the terrain): it names
-    // the first of them given, by --set or on its line of the scene file.
+    // the first of them --set gave, or else the scene file's line of the first it holds.
     InputError refusal(const std::vector<const char*>& keys, const std::string& what) const;
     TerrainConfig terrain;
     std::string forestFile;     // forest CSV (sylvarock generate's, or x,y,dbh_cm[,stool]); empty: no forest

@@ -104,6 +104,11 @@ bool isPolygon(const OGRGeometry* g) {
     return type == wkbPolygon || type == wkbMultiPolygon;
 }
 
+// "xmin..xmax x ymin..ymax", as the messages give a rectangle.
+std::string extentText(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi) {
+    return readableNumber(lo.x()) + ".." + readableNumber(hi.x()) + " x " + readableNumber(lo.y()) + ".." + readableNumber(hi.y());
+}
+
 bool holdsPolygons(OGRLayer& layer) {
     for (auto& f : layer)
         if (isPolygon(f->GetGeometryRef())) return true;
@@ -168,8 +173,7 @@ StandForest readStandPolygons(const std::string& path, const Dtm& dtm, std::uint
             std::unique_ptr<OGRGeometry> cut(g->Intersection(&terrain));
             if (!cut || !(areaOf(*cut) > 0))
                 throw InputError(path, 0, where + " (stand " + s.inventory + ") lies outside the terrain, which spans the DTM's cell centres " +
-                                              readableNumber(lo.x()) + ".." + readableNumber(hi.x()) + " x " + readableNumber(lo.y()) + ".." +
-                                              readableNumber(hi.y()));
+                                              extentText(lo, hi));
             // Cut silently, a stand drawn past the DTM's edge lost its forest there without a word. Past
             // its outer edge, not its cell centres: a stand drawn to the edge loses a half-cell strip, as
             // every forest on a DTM does.
@@ -177,8 +181,7 @@ StandForest readStandPolygons(const std::string& path, const Dtm& dtm, std::uint
             const double beyond = areaOf(*g) - (onDtm ? areaOf(*onDtm) : 0.0);
             if (beyond > kOverlapToleranceM2)
                 out.notes.push_back(path + ": " + where + " (stand " + s.inventory + "): " + readableNumber(std::round(beyond)) + " m2 of its " +
-                                    readableNumber(std::round(areaOf(*g))) + " m2 lie beyond the DTM (" + readableNumber(outerLo.x()) + ".." +
-                                    readableNumber(outerHi.x()) + " x " + readableNumber(outerLo.y()) + ".." + readableNumber(outerHi.y()) +
+                                    readableNumber(std::round(areaOf(*g))) + " m2 lie beyond the DTM (" + extentText(outerLo, outerHi) +
                                     ") and are left without trees");
             for (std::size_t k = 0; k < onTerrain.size(); ++k) {
                 std::unique_ptr<OGRGeometry> both(onTerrain[k]->Intersection(cut.get()));

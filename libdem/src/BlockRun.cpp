@@ -76,9 +76,8 @@ Release drawRelease(const Scene& scene, std::uint64_t seed, const std::optional<
                              std::vector<const char*> xKeys, const std::vector<const char*>& yKeys) {
         const bool xOut = x < soil.xmin() || x > soil.xmax(), yOut = y < soil.ymin() || y > soil.ymax();
         if (!xOut && !yOut) return;
-        const std::string message = what + " (" + readableNumber(x) + ", " + readableNumber(y) + ") is outside the terrain (x in [" +
-                                    readableNumber(soil.xmin()) + ", " + readableNumber(soil.xmax()) + "], y in [" +
-                                    readableNumber(soil.ymin()) + ", " + readableNumber(soil.ymax()) + "])" + remedy;
+        const std::string message =
+            what + " (" + readableNumber(x) + ", " + readableNumber(y) + ") is outside the terrain (" + soil.boundsText() + ")" + remedy;
         if (!xOut) xKeys.clear();
         if (yOut) xKeys.insert(xKeys.end(), yKeys.begin(), yKeys.end());
         throw xKeys.empty() ? InputError(message) : cfg.refusal(xKeys, message);

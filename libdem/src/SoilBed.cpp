@@ -187,6 +187,11 @@ double SoilBed::surfaceHeight(double x, double y) const {
     return profile_ ? profile_->height(x) : grid_->height(x, y);
 }
 
+std::string SoilBed::boundsText() const {
+    return "x in [" + readableNumber(xmin_) + ", " + readableNumber(xmax_) + "], y in [" + readableNumber(ymin_) + ", " +
+           readableNumber(ymax_) + "]";
+}
+
 double SoilBed::alongSlope(double x0, double x1, double y) const {
     return profile_ ? profile_->abscissa(x1) - profile_->abscissa(x0) : grid_->lengthAlongX(x0, x1, y);
 }

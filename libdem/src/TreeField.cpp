@@ -37,8 +37,7 @@ TreeField::TreeField(const stand::Forest& forest, const SoilBed& soil, double ti
             const double beyond = std::max({soil.xmin() - t.x, t.x - soil.xmax(), soil.ymin() - t.y, t.y - soil.ymax()});
             const bool atEdge = beyond <= 0.5 * soil.dtmCellSize();
             what << (forest.source.empty() ? "forest: " : "") << "stem " << t.id << " at (" << t.x << ", " << t.y
-                 << ") is outside the terrain (x in [" << soil.xmin() << ", " << soil.xmax() << "], y in ["
-                 << soil.ymin() << ", " << soil.ymax() << "] m)"
+                 << ") is outside the terrain (" << soil.boundsText() << " m)"
                  << (atEdge ? ", by " + readableNumber(std::round(beyond * 100) / 100) + " m: the terrain ends at the DTM's "
                               "outermost cell centres, half a cell inside the raster's edge; keep the trees that far inside"
                             : ": a forest in another frame or CRS?");

@@ -69,6 +69,8 @@ public:
     double xmax() const { return xmax_; }
     double ymin() const { return ymin_; }
     double ymax() const { return ymax_; }
+    // "x in [xmin, xmax], y in [ymin, ymax]", for the messages that refuse a point outside it.
+    std::string boundsText() const;
 
     void writeCsv(const std::string& path) const;  // x,y,z,r per sphere (for ParaView / another DEM code)
 

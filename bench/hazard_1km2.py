@@ -5,7 +5,9 @@ from a stand polygon (~126 000 stems), 10 blocks per release cell (10 000 blocks
 of each `sylvarock hazard` run (GNU time), the model's per-block cost, and for the DEM the time 10 000 blocks
 would take at the measured rate.
 
-    python3 bench/hazard_1km2.py build/apps/sylvarock [dem_blocks=50]   (needs gdal-bin, /usr/bin/time)
+    python3 bench/hazard_1km2.py build/apps/sylvarock [dem_blocks=50] [section.key=value ...]   (needs gdal-bin, /usr/bin/time)
+
+Scene keys after the block count go to both runs as --set (e.g. stem.upper_spacing_factor=2).
 
 The DTM is made up (a 35-to-5 degree concave slope with gullies across it), in Lambert-93, written to /tmp."""
 import json, math, os, re, subprocess, sys, tempfile, time
@@ -13,6 +15,7 @@ import json, math, os, re, subprocess, sys, tempfile, time
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 exe = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build/apps/sylvarock")
 dem_blocks = int(sys.argv[2]) if len(sys.argv) > 2 else 50
+sets = [a for key in sys.argv[3:] for a in ("--set", key)]
 tmp = tempfile.mkdtemp(prefix="sylvarock-1km2-")
 X0, Y0, CELL, N = 900000.0, 6400000.0, 2.0, 500
 
@@ -48,7 +51,7 @@ def hazard(label, runs_per_cell, model, release):
     out = os.path.join(tmp, label)
     cmd = ["/usr/bin/time", "-v", exe, "hazard", "--dtm", dtm, "--release", release, "--stands", stands,
            "--scene", os.path.join(ROOT, "data/scenes/no-forest.ini"), "--model", model, "--runs-per-cell", str(runs_per_cell),
-           "--seed", "1", "--threads", "2", "--out", out]
+           "--seed", "1", "--threads", "2", "--out", out] + sets
     t0 = time.time()
     r = subprocess.run(cmd, capture_output=True, text=True)
     wall = time.time() - t0

@@ -12,6 +12,7 @@
 
 #include "../CliRun.hpp"
 #include "../WholeFile.hpp"
+#include "libstand/Allometry.hpp"
 
 namespace {
 
@@ -77,7 +78,7 @@ std::string forestFile() {
 
 TEST(SceneExportCli, WritesEveryStemAtRestNodeByNode) {
     // stem.node_spacing_m, stem.upper_spacing_factor, stem.struck_zone_m, stem.tip_diameter_m (default)
-    const double spacing = 0.75, upper = 1.5, zone = 4, tip = 0.01;  // upper: 2 x the node spacing
+    const double spacing = 0.75, upper = 1.5, struckZone = 4, tip = 0.01;  // upper: 2 x the node spacing
     const std::string out = (exportDir() / "forest-out").string();
     std::filesystem::remove_all(out);
     const CliRun r = sceneExport("--scene " + slopeScene() + " --forest " + forestFile() +
@@ -89,9 +90,11 @@ TEST(SceneExportCli, WritesEveryStemAtRestNodeByNode) {
     for (const auto& t : kForest) {
         ASSERT_EQ(stems.count(t.id), 1u) << t.id;
         const auto& nodes = stems.at(t.id);
-        // 6 equal connections (0.67 m) up to 4 m, then ceil((H - 4) / 1.5) equal ones: 6, 9 and 11 for
-        // 12, 17.3 and 20.25 m.
-        const std::size_t lower = 6;
+        // Equal connections of at most 0.75 m up to the crown base (Eq. 12: 7.1, 10.3 and 12.0 m for 12,
+        // 17.3 and 20.25 m, all above the 4 m struck zone), then ceil((H - base) / 1.5) equal ones.
+        const double zone = std::max(struckZone, t.heightM - sylva::stand::crownLengthM(t.heightM));
+        ASSERT_GT(zone, struckZone) << t.id;
+        const std::size_t lower = static_cast<std::size_t>(std::ceil(zone / spacing));
         const std::size_t above = static_cast<std::size_t>(std::ceil((t.heightM - zone) / upper));
         const auto restHeight = [&](std::size_t k) {
             return k <= lower ? k * zone / lower : zone + (t.heightM - zone) * static_cast<double>(k - lower) / above;

@@ -104,20 +104,23 @@ TEST(StemBuild, NodesCarryTheTruncatedConeAndTheCrown) {
         EXPECT_EQ(perAxis.bending(c).reading(), BendingReading::PerAxis);
 }
 
-// A graded stem: the struck zone at the node spacing, coarser above, with the wood and the crown
-// still where the cone puts them and a step no shorter than the uniform stem's.
+// A graded stem: the bole at the node spacing up to the crown base, coarser in the crown, with the
+// wood and the crown still where the cone puts them and a step no shorter than the uniform stem's.
 TEST(StemBuild, AGradedStemIsCutFinerInTheStruckZoneAndKeepsItsMass) {
     const StemGeometry g = beechStem(30);  // 21.7 m high, crown from 12.9 m
     StemParams p;
     p.nodeSpacing = 0.5;
     p.upperSpacingFactor = 3;  // 1.5 m
     p.struckZone = 4;
+    const double base = g.height - g.crownLength;
+    ASSERT_GT(base, p.struckZone);
     const Stem uniform(g, StemParams{}, Vec3::Zero(), StemFoot::RootSpring);
     const Stem graded(g, p, Vec3::Zero(), StemFoot::RootSpring);
-    const std::size_t upper = static_cast<std::size_t>(std::ceil((g.height - 4) / 1.5));
-    ASSERT_EQ(graded.connectionCount(), 8 + upper);
+    const std::size_t lower = static_cast<std::size_t>(std::ceil(base / 0.5));
+    const std::size_t upper = static_cast<std::size_t>(std::ceil((g.height - base) / 1.5));
+    ASSERT_EQ(graded.connectionCount(), lower + upper);
     for (std::size_t c = 0; c < graded.connectionCount(); ++c) {
-        const double expected = c < 8 ? 0.5 : (g.height - 4) / upper;
+        const double expected = c < lower ? base / lower : (g.height - base) / upper;
         EXPECT_NEAR(graded.connectionLength(c), expected, 1e-12) << "connection " << c;
         EXPECT_NEAR(graded.restHeight(c + 1) - graded.restHeight(c), expected, 1e-12) << "connection " << c;
         EXPECT_NEAR(graded.position[c + 1].z(), graded.restHeight(c + 1), 1e-12);
@@ -138,13 +141,23 @@ TEST(StemBuild, AGradedStemIsCutFinerInTheStruckZoneAndKeepsItsMass) {
                         (std::pow(graded.diameterAt(graded.restHeight(top - 1)), 2) +
                          graded.diameterAt(graded.restHeight(top - 1)) * graded.diameterAt(g.height) + std::pow(graded.diameterAt(g.height), 2)) / 12;
     crown = graded.mass()[top] - wood;
+    // The node on the crown base (the zone's top) is a crown node, as Stem's rounding tolerance makes it.
     double crownSpan = 0;
     for (std::size_t i = 1; i <= top; ++i)
-        if (g.height - graded.restHeight(i) <= g.crownLength) crownSpan += graded.connectionLength(i - 1);
+        if (g.height - graded.restHeight(i) <= g.crownLength + 1e-9 * g.height) crownSpan += graded.connectionLength(i - 1);
     EXPECT_NEAR(crown, g.crownMass * graded.connectionLength(top - 1) / crownSpan, 1e-9 * g.crownMass);
 
     // Longer connections above only lower their own frequencies.
     EXPECT_GE(graded.stableTimeStep(), uniform.stableTimeStep() * (1 - 1e-12));
+
+    // A crown reaching below the struck zone leaves the zone at the node spacing: there blocks strike.
+    StemGeometry lowCrown = g;
+    lowCrown.crownLength = g.height - 2;
+    const Stem deepCrown(lowCrown, p, Vec3::Zero(), StemFoot::RootSpring);
+    const std::size_t above = static_cast<std::size_t>(std::ceil((g.height - 4) / 1.5));
+    ASSERT_EQ(deepCrown.connectionCount(), 8 + above);
+    EXPECT_NEAR(deepCrown.restHeight(8), 4.0, 1e-12);
+    EXPECT_NEAR(deepCrown.connectionLength(8), (g.height - 4) / above, 1e-12);
 
     // A stem barely taller than the zone is cut at the node spacing all the way up, rather than end
     // in a connection shorter than those below it.

@@ -2,7 +2,7 @@
 // A tree stem as a chain of rigid nodes from the foot up (paper Sect. 2.1.2, Fig. 2).
 // Geometry: a truncated cone through the DBH at 1.3 m, tapering linearly to StemParams::tipDiameter
 // at H_T, cut into equal connections of length l up to StemParams::nodeSpacing (a graded stem: equal
-// ones so in the struck zone, and equal ones up to StemParams::upperSpacingFactor times that above it).
+// ones so up to the crown base, and equal ones up to StemParams::upperSpacingFactor times that above it).
 // Each cone segment's mass goes half to each of its nodes; the crown mass m_C is spread over the nodes
 // within L_C of the top, each carrying the crown along the connection below it (equally, on equal
 // connections, as the paper spreads it). Between neighbouring nodes a connection of length l
@@ -94,8 +94,9 @@ public:
     StableStep stability() const;  // the two bounds, to which contacts add theirs
 
     // Where the stem is cut: connections of equal length, at most StemParams::nodeSpacing, up to the
-    // struck zone's top, and at most upperSpacingFactor times that above it (docs/model-stems.md, "A graded stem").
-    static std::vector<double> connectionLengths(double height, const StemParams& p);
+    // crown base (at least the struck zone's top), and at most upperSpacingFactor times that above it
+    // (docs/model-stems.md, "A graded stem").
+    static std::vector<double> connectionLengths(const StemGeometry& g, const StemParams& p);
 
 private:
     struct Connection {

@@ -54,12 +54,12 @@ struct StemParams {
     double density = 1200;       // fresh wood, kg/m^3
     double poisson = 0.3;        // nu: not in the paper; G = MOE / (2 (1 + nu))
     double nodeSpacing = 0.5;    // m, longest connection: the stem (its struck zone, if graded) is cut into equal connections no longer than this
-    // Above the struck zone (the foot to `struckZone`, where blocks hit stems and hinges form) the stem
-    // may be cut coarser, at most upperSpacingFactor x nodeSpacing apart: there it only swings, and its
-    // nodes are most of a tall stem's. 1: the whole stem at nodeSpacing, as the paper's. Refining the
-    // node spacing refines both parts. A resolution (docs/model-stems.md, "A graded stem").
+    // In the crown (above the crown base, or above `struckZone` if that is higher: where blocks hit
+    // stems, hinges form and boles break) the stem may be cut coarser, at most upperSpacingFactor x
+    // nodeSpacing apart: there it mostly swings. 1: the whole stem at nodeSpacing, as the paper's.
+    // Refining the node spacing refines both parts. A resolution (docs/model-stems.md, "A graded stem").
     double upperSpacingFactor = 1;
-    double struckZone = 4;  // m above the foot
+    double struckZone = 4;  // m above the foot, the least height cut at nodeSpacing
     double tipDiameter = 0.01;   // m, diameter of the truncated cone at H_T (docs/model-stems.md)
     // The axial springs' stiffness MOE A / l is divided by this. A numerical device, not wood: the
     // axial wave, l sqrt(rho / MOE), limits the explicit step while the bending allows 1.8-4.5 times more at 0.5 m,

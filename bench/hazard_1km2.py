@@ -7,15 +7,16 @@ would take at the measured rate.
 
     python3 bench/hazard_1km2.py build/apps/sylvarock [dem_blocks=50] [section.key=value ...]   (needs gdal-bin, /usr/bin/time)
 
-Scene keys after the block count go to both runs as --set (e.g. stem.upper_spacing_factor=2).
+Scene keys go to both runs as --set (e.g. stem.upper_spacing_factor=2).
 
 The DTM is made up (a 35-to-5 degree concave slope with gullies across it), in Lambert-93, written to /tmp."""
 import json, math, os, re, subprocess, sys, tempfile, time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 exe = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build/apps/sylvarock")
-dem_blocks = int(sys.argv[2]) if len(sys.argv) > 2 else 50
-sets = [a for key in sys.argv[3:] for a in ("--set", key)]
+args = sys.argv[2:]
+dem_blocks = int(args.pop(0)) if args and "=" not in args[0] else 50
+sets = [a for key in args for a in ("--set", key)]
 tmp = tempfile.mkdtemp(prefix="sylvarock-1km2-")
 X0, Y0, CELL, N = 900000.0, 6400000.0, 2.0, 500
 

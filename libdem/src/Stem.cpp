@@ -55,8 +55,9 @@ std::vector<double> Stem::connectionLengths(const StemGeometry& g, const StemPar
     };
     const double height = g.height;
     std::vector<double> lengths;
-    // The bole breaks where the block's push whips it, up to the crown base (a 20 cm stem at 7-8 m of
-    // its 8.2 m): cut coarser there and the break's place, and its release, move by a whole connection.
+    // A bole the block's push whips breaks up to its crown base (a 20 cm stem, 13.9 m high, at 7-8 m
+    // against a base at 8.2 m): cut coarser there, the break's place and its release move by a whole
+    // connection.
     const double crownBase = g.height - g.crownLength;
     const double zone = p.upperSpacingFactor > 1 ? std::min(std::max(p.struckZone, crownBase), height) : height;
     cut(zone, p.nodeSpacing, lengths);

@@ -106,8 +106,8 @@ TEST(StemBuild, NodesCarryTheTruncatedConeAndTheCrown) {
 
 // A graded stem: the bole at the node spacing up to the crown base, coarser in the crown, with the
 // wood and the crown still where the cone puts them and a step no shorter than the uniform stem's.
-TEST(StemBuild, AGradedStemIsCutFinerInTheStruckZoneAndKeepsItsMass) {
-    const StemGeometry g = beechStem(30);  // 21.7 m high, crown from 12.9 m
+TEST(StemBuild, AGradedStemIsCutFinerUpToItsCrownBaseAndKeepsItsMass) {
+    const StemGeometry g = beechStem(30);  // 18.5 m high, crown from 11.0 m (Eqs. 11-12)
     StemParams p;
     p.nodeSpacing = 0.5;
     p.upperSpacingFactor = 3;  // 1.5 m
@@ -158,6 +158,14 @@ TEST(StemBuild, AGradedStemIsCutFinerInTheStruckZoneAndKeepsItsMass) {
     ASSERT_EQ(deepCrown.connectionCount(), 8 + above);
     EXPECT_NEAR(deepCrown.restHeight(8), 4.0, 1e-12);
     EXPECT_NEAR(deepCrown.connectionLength(8), (g.height - 4) / above, 1e-12);
+
+    // A crown shorter than the fine connections below it (0.2 m) would end the stem in a connection
+    // shorter than theirs: the stem is cut at the node spacing all the way up instead.
+    StemGeometry shortCrown = g;
+    shortCrown.crownLength = 0.2;
+    const Stem tuft(shortCrown, p, Vec3::Zero(), StemFoot::RootSpring);
+    ASSERT_EQ(tuft.connectionCount(), static_cast<std::size_t>(std::ceil(g.height / 0.5)));
+    for (std::size_t c = 0; c < tuft.connectionCount(); ++c) EXPECT_NEAR(tuft.connectionLength(c), tuft.connectionLength(0), 1e-12);
 
     // A stem barely taller than the zone is cut at the node spacing all the way up, rather than end
     // in a connection shorter than those below it.

@@ -262,11 +262,17 @@ TEST(TreeImpact, GradedStemGivesTheUniformStemsImpact) {
 }
 
 // And the graded stem is itself a resolution: at half the node spacing (0.25 m to the crown base, 0.5 m
-// in the crown) the same impacts within the same 5 %. With the zone ending at 4 m instead, the 20 cm
-// stem's whip broke its bole at 7.2-8.4 m, in the coarse part, and its terms moved by 7.9 %.
+// in the crown) the same impacts within the same 5 % of the impact energy, the matrix's measure.
 // Measured: tree 0.0, 0.5 and 2.4 %, block 1.0, 0.1 and 4.2 % (the uniform stem: 1.8, 0.1, 0.3 % and
-// 1.2, 2.1, 1.4 %, DefaultStemAgreesAtHalfTheSpacing and the matrix).
+// 1.2, 2.1, 1.4 %, DefaultStemAgreesAtHalfTheSpacing and the matrix). And the 20 cm stem at 10 m/s
+// within 5 % of the tree's own terms, as DefaultStemAgreesAtHalfTheSpacing asks of the default: with
+// the zone ending at 4 m its whip broke the bole at 7.2-8.4 m, in the coarse part, and its terms moved
+// by 7.9 % (measured now: 0.1 %). The 15 and 25 cm stems at 15 m/s move by 5.8 and 6.6 % of their
+// terms, which is why the graded stem is not the default (docs/model-stems.md).
 TEST(TreeImpact, GradedStemAgreesAtHalfTheSpacing) {
-    expectTheSameImpacts("graded, 0.5 m", {"stem.upper_spacing_factor=2"}, "graded, 0.25 m",
-                         {"stem.upper_spacing_factor=2", "stem.node_spacing_m=0.25"}, 0.05);
+    const std::vector<std::string> coarse{"stem.upper_spacing_factor=2"},
+        fine{"stem.upper_spacing_factor=2", "stem.node_spacing_m=0.25"};
+    expectTheSameImpacts("graded, 0.5 m", coarse, "graded, 0.25 m", fine, 0.05);
+    const double whipped = treeTerms(impactOn("20", "10", coarse)), finer = treeTerms(impactOn("20", "10", fine));
+    EXPECT_NEAR(whipped, finer, 0.05 * finer);
 }

@@ -53,10 +53,10 @@ struct StemParams {
     RootSpringParams root;
     double density = 1200;       // fresh wood, kg/m^3
     double poisson = 0.3;        // nu: not in the paper; G = MOE / (2 (1 + nu))
-    double nodeSpacing = 0.5;    // m, longest connection: the stem (its struck zone, if graded) is cut into equal connections no longer than this
-    // In the crown (above the crown base, or above `struckZone` if that is higher: where blocks hit
-    // stems, hinges form and boles break) the stem may be cut coarser, at most upperSpacingFactor x
-    // nodeSpacing apart: there it mostly swings. 1: the whole stem at nodeSpacing, as the paper's.
+    double nodeSpacing = 0.5;    // m, longest connection: the stem (up to its crown base, if graded) is cut into equal connections no longer than this
+    // Blocks hit stems, hinges form and whipped boles break below the crown base. Above it (or above
+    // `struckZone`, if that is higher) the stem mostly swings and may be cut coarser, at most
+    // upperSpacingFactor x nodeSpacing apart. 1: the whole stem at nodeSpacing, as the paper's.
     // Refining the node spacing refines both parts. A resolution (docs/model-stems.md, "A graded stem").
     double upperSpacingFactor = 1;
     double struckZone = 4;  // m above the foot, the least height cut at nodeSpacing

@@ -58,7 +58,7 @@ std::vector<double> Stem::connectionLengths(const StemGeometry& g, const StemPar
     // A bole the block's push whips breaks up to its crown base (a 20 cm stem, 13.9 m high, at 7-8 m
     // against a base at 8.2 m): cut coarser there, the break's place and its release move by a whole
     // connection.
-    const double crownBase = g.height - g.crownLength;
+    const double crownBase = height - g.crownLength;
     const double zone = p.upperSpacingFactor > 1 ? std::min(std::max(p.struckZone, crownBase), height) : height;
     cut(zone, p.nodeSpacing, lengths);
     if (height > zone) {

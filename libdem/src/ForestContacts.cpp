@@ -45,9 +45,11 @@ ContactHistory startedAt(double overlap) {
 
 // The piece of a broken stem that a contact at t along connection c is on, named by its lowest
 // connection (the one above the nearest broken one below c; 0 for the standing stem). A connection
-// that has just broken under the contact leaves it with the end it was nearer.
+// that has just broken under the contact leaves it with the end it was nearer. A node left alone
+// between two breaks, or on top of a broken one, is a piece named by the connection above it (the
+// top node: one past the last), which, broken or absent, starts no other piece.
 std::uint32_t pieceStart(const Stem& s, std::size_t c, double t) {
-    if (s.broken(c) && t >= 0.5 && c + 1 < s.connectionCount()) return static_cast<std::uint32_t>(c + 1);
+    if (s.broken(c) && t >= 0.5) return static_cast<std::uint32_t>(c + 1);
     while (c > 0 && !s.broken(c - 1)) --c;
     return static_cast<std::uint32_t>(c);
 }
@@ -87,16 +89,17 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
         }
         if (a.nodeBox->exteriorDistance(block.position) > block.boundingRadius() + approach) continue;
         for (std::size_t c = 0; c < s.connectionCount(); ++c) {
-            if (s.broken(c)) continue;
-            const Vec3& a0 = s.position[c];
-            const Vec3& a1 = s.position[c + 1];
-            const double r = 0.5 * s.connectionDiameter(c);
-            const double tc = closestOnSegment(block.position, a0, a1);
+            const std::optional<TouchFeature> feature = touchFeature(s, c);
+            if (!feature) continue;
+            const Vec3 &a0 = feature->a0, &a1 = feature->a1;
+            const double r = feature->radius;
+            const auto along = [&](const Vec3& p) { return feature->nodeOnly ? 1.0 : closestOnSegment(p, a0, a1); };
+            const double tc = along(block.position);
             if (beyondReach((block.position - (a0 + tc * (a1 - a0))).squaredNorm(), block.boundingRadius() + r + approach))
                 continue;
             for (std::uint32_t i = 0; i < centres.size(); ++i) {
                 const double rb = block.spheres()[i].radius;
-                const double t = closestOnSegment(centres[i], a0, a1);
+                const double t = along(centres[i]);
                 const Vec3 axisPoint = a0 + t * (a1 - a0);
                 // Farther than rb + r + approach, the sphere neither touches nor sets the stem moving.
                 if (beyondReach((centres[i] - axisPoint).squaredNorm(), rb + r + approach)) continue;
@@ -152,8 +155,8 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
 // Pairs of connections of different awake stems, or of two pieces of a broken one, that may touch:
 // within their radii plus the skin of each other when listed. The list holds until some node has
 // moved half the skin (then no pair left out can have closed the skin), the awake stems change or a
-// connection breaks. A node between two broken connections has no connection left to touch with:
-// a fragment that small falls through stems (docs/model-stems.md).
+// connection breaks. A node left alone between two breaks is paired as a sphere of its own
+// (touchFeature).
 void ForestMotion::listStemPairs() {
     stemPairs_.clear();
     // Boxes around each awake stem's nodes, widened by its thickest radius and the skin: most pairs
@@ -169,19 +172,17 @@ void ForestMotion::listStemPairs() {
     const auto inBox = [](const Stem& s, const Eigen::AlignedBox3d& other, std::vector<std::size_t>& out) {
         out.clear();
         for (std::size_t c = 0; c < s.connectionCount(); ++c) {
-            if (s.broken(c)) continue;
-            const double r = 0.5 * s.connectionDiameter(c) + 0.5 * kStemPairSkin;
-            const Eigen::AlignedBox3d box(s.position[c].cwiseMin(s.position[c + 1]) - Vec3::Constant(r),
-                                          s.position[c].cwiseMax(s.position[c + 1]) + Vec3::Constant(r));
+            const std::optional<TouchFeature> f = touchFeature(s, c);
+            if (!f) continue;
+            const double r = f->radius + 0.5 * kStemPairSkin;
+            const Eigen::AlignedBox3d box(f->a0.cwiseMin(f->a1) - Vec3::Constant(r), f->a0.cwiseMax(f->a1) + Vec3::Constant(r));
             if (box.intersects(other)) out.push_back(c);
         }
     };
     const auto pairIfNear = [this](std::size_t ia, std::size_t ca, std::size_t ib, std::size_t cb) {
-        const Stem& A = awake_[ia].stem;
-        const Stem& B = awake_[ib].stem;
-        const Vec3 &a0 = A.position[ca], &a1 = A.position[ca + 1];
-        const Vec3 &b0 = B.position[cb], &b1 = B.position[cb + 1];
-        const double near = 0.5 * (A.connectionDiameter(ca) + B.connectionDiameter(cb)) + kStemPairSkin;
+        const TouchFeature fa = *touchFeature(awake_[ia].stem, ca), fb = *touchFeature(awake_[ib].stem, cb);
+        const Vec3 &a0 = fa.a0, &a1 = fa.a1, &b0 = fb.a0, &b1 = fb.a1;
+        const double near = fa.radius + fb.radius + kStemPairSkin;
         // Cheap rejection on the segments' midpoints before the exact closest points.
         const double reach = near + 0.5 * ((a1 - a0).norm() + (b1 - b0).norm());
         if ((0.5 * (a0 + a1) - 0.5 * (b0 + b1)).squaredNorm() > reach * reach) return;
@@ -203,14 +204,12 @@ void ForestMotion::listStemPairs() {
         const Stem& s = awake_[k].stem;
         if (!awake_[k].broken) continue;
         for (std::size_t ca = 0; ca < s.connectionCount(); ++ca) {
-            if (s.broken(ca)) continue;
-            bool apart = false;  // a broken connection between ca and cb: two pieces
+            if (!touchFeature(s, ca)) continue;
+            // On two pieces once a connection from ca up to cb is broken (a lone node is a piece of its own).
+            bool apart = s.broken(ca);
             for (std::size_t cb = ca + 1; cb < s.connectionCount(); ++cb) {
-                if (s.broken(cb)) {
-                    apart = true;
-                    continue;
-                }
-                if (apart) pairIfNear(k, ca, k, cb);
+                apart = apart || s.broken(cb);
+                if (apart && touchFeature(s, cb)) pairIfNear(k, ca, k, cb);
             }
         }
     }

@@ -25,21 +25,15 @@ bool fusedAtRest(const PlantedStem& A, std::size_t ca, const PlantedStem& B, std
 
 std::optional<ConnectionTouch> touchConnections(const PlantedStem& A, std::size_t ca, const PlantedStem& B, std::size_t cb) {
     const Stem &sa = A.stem, &sb = B.stem;
-    const std::optional<TouchFeature> fa = touchFeature(sa, ca), fb = touchFeature(sb, cb);
-    if (!fa || !fb) return std::nullopt;
+    if (sa.broken(ca) || sb.broken(cb)) return std::nullopt;
+    const Vec3 &a0 = sa.position[ca], &a1 = sa.position[ca + 1];
+    const Vec3 &b0 = sb.position[cb], &b1 = sb.position[cb + 1];
     ConnectionTouch touch{};
-    // A lone node is the upper end of its broken connection: the contact's force goes to it alone.
-    if (fa->nodeOnly || fb->nodeOnly) {
-        touch.s = fa->nodeOnly ? 1 : closestOnSegment(fb->a1, fa->a0, fa->a1);
-        touch.t = fb->nodeOnly ? 1 : closestOnSegment(fa->a1, fb->a0, fb->a1);
-    } else {
-        std::tie(touch.s, touch.t) = closestBetweenSegments(fa->a0, fa->a1, fb->a0, fb->a1);
-    }
+    std::tie(touch.s, touch.t) = closestBetweenSegments(a0, a1, b0, b1);
     if (touch.s <= kAtNode && ca > 0 && !sa.broken(ca - 1) && !fusedAtRest(A, ca - 1, B, cb)) return std::nullopt;
     if (touch.t <= kAtNode && cb > 0 && !sb.broken(cb - 1) && !fusedAtRest(A, ca, B, cb - 1)) return std::nullopt;
-    if (!touchSpheres(fa->a0 + touch.s * (fa->a1 - fa->a0), fa->radius, fb->a0 + touch.t * (fb->a1 - fb->a0), fb->radius,
-                      touch.geometry))
-        return std::nullopt;
+    const double ra = 0.5 * sa.connectionDiameter(ca), rb = 0.5 * sb.connectionDiameter(cb);
+    if (!touchSpheres(a0 + touch.s * (a1 - a0), ra, b0 + touch.t * (b1 - b0), rb, touch.geometry)) return std::nullopt;
     return touch;
 }
 

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "libdem/ConnectionTouch.hpp"
 #include "libdem/SegmentGeometry.hpp"
@@ -54,6 +55,22 @@ std::uint32_t pieceStart(const Stem& s, std::size_t c, double t) {
     return static_cast<std::uint32_t>(c);
 }
 
+// What the block touches of connection c: its axis, a0 to a1, and its radius. Broken, it leaves the
+// node above it alone if that node is between two breaks or on top (a whipped crown shattered into
+// single nodes): that node keeps its mass, a crown tip of a few kilograms, and meets the block as a
+// sphere of its own diameter, as it meets the soil; a contact on it is on connection c at its upper
+// end (nodeOnly: a0 = a1 = the node). Otherwise nothing.
+struct BlockFeature {
+    Vec3 a0, a1;
+    double radius;
+    bool nodeOnly;
+};
+std::optional<BlockFeature> blockFeature(const Stem& s, std::size_t c) {
+    if (!s.broken(c)) return BlockFeature{s.position[c], s.position[c + 1], 0.5 * s.connectionDiameter(c), false};
+    if (c + 1 < s.connectionCount() && !s.broken(c + 1)) return std::nullopt;
+    return BlockFeature{s.position[c + 1], s.position[c + 1], 0.5 * s.diameterAt(s.restHeight(c + 1)), true};
+}
+
 }  // namespace
 
 // A point near connection c, at parameter t of its axis: it moves with the axis point
@@ -89,7 +106,7 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
         }
         if (a.nodeBox->exteriorDistance(block.position) > block.boundingRadius() + approach) continue;
         for (std::size_t c = 0; c < s.connectionCount(); ++c) {
-            const std::optional<TouchFeature> feature = touchFeature(s, c);
+            const std::optional<BlockFeature> feature = blockFeature(s, c);
             if (!feature) continue;
             const Vec3 &a0 = feature->a0, &a1 = feature->a1;
             const double r = feature->radius;
@@ -155,8 +172,8 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
 // Pairs of connections of different awake stems, or of two pieces of a broken one, that may touch:
 // within their radii plus the skin of each other when listed. The list holds until some node has
 // moved half the skin (then no pair left out can have closed the skin), the awake stems change or a
-// connection breaks. A node left alone between two breaks is paired as a sphere of its own
-// (touchFeature).
+// connection breaks. A node between two broken connections has no connection left to touch with:
+// a fragment that small falls through stems (docs/model-stems.md).
 void ForestMotion::listStemPairs() {
     stemPairs_.clear();
     // Boxes around each awake stem's nodes, widened by its thickest radius and the skin: most pairs
@@ -172,17 +189,19 @@ void ForestMotion::listStemPairs() {
     const auto inBox = [](const Stem& s, const Eigen::AlignedBox3d& other, std::vector<std::size_t>& out) {
         out.clear();
         for (std::size_t c = 0; c < s.connectionCount(); ++c) {
-            const std::optional<TouchFeature> f = touchFeature(s, c);
-            if (!f) continue;
-            const double r = f->radius + 0.5 * kStemPairSkin;
-            const Eigen::AlignedBox3d box(f->a0.cwiseMin(f->a1) - Vec3::Constant(r), f->a0.cwiseMax(f->a1) + Vec3::Constant(r));
+            if (s.broken(c)) continue;
+            const double r = 0.5 * s.connectionDiameter(c) + 0.5 * kStemPairSkin;
+            const Eigen::AlignedBox3d box(s.position[c].cwiseMin(s.position[c + 1]) - Vec3::Constant(r),
+                                          s.position[c].cwiseMax(s.position[c + 1]) + Vec3::Constant(r));
             if (box.intersects(other)) out.push_back(c);
         }
     };
     const auto pairIfNear = [this](std::size_t ia, std::size_t ca, std::size_t ib, std::size_t cb) {
-        const TouchFeature fa = *touchFeature(awake_[ia].stem, ca), fb = *touchFeature(awake_[ib].stem, cb);
-        const Vec3 &a0 = fa.a0, &a1 = fa.a1, &b0 = fb.a0, &b1 = fb.a1;
-        const double near = fa.radius + fb.radius + kStemPairSkin;
+        const Stem& A = awake_[ia].stem;
+        const Stem& B = awake_[ib].stem;
+        const Vec3 &a0 = A.position[ca], &a1 = A.position[ca + 1];
+        const Vec3 &b0 = B.position[cb], &b1 = B.position[cb + 1];
+        const double near = 0.5 * (A.connectionDiameter(ca) + B.connectionDiameter(cb)) + kStemPairSkin;
         // Cheap rejection on the segments' midpoints before the exact closest points.
         const double reach = near + 0.5 * ((a1 - a0).norm() + (b1 - b0).norm());
         if ((0.5 * (a0 + a1) - 0.5 * (b0 + b1)).squaredNorm() > reach * reach) return;
@@ -204,12 +223,14 @@ void ForestMotion::listStemPairs() {
         const Stem& s = awake_[k].stem;
         if (!awake_[k].broken) continue;
         for (std::size_t ca = 0; ca < s.connectionCount(); ++ca) {
-            if (!touchFeature(s, ca)) continue;
-            // On two pieces once a connection from ca up to cb is broken (a lone node is a piece of its own).
-            bool apart = s.broken(ca);
+            if (s.broken(ca)) continue;
+            bool apart = false;  // a broken connection between ca and cb: two pieces
             for (std::size_t cb = ca + 1; cb < s.connectionCount(); ++cb) {
-                apart = apart || s.broken(cb);
-                if (apart && touchFeature(s, cb)) pairIfNear(k, ca, k, cb);
+                if (s.broken(cb)) {
+                    apart = true;
+                    continue;
+                }
+                if (apart) pairIfNear(k, ca, k, cb);
             }
         }
     }

@@ -683,39 +683,3 @@ TEST(ExtremeForest, ANodeBetweenTwoBreaksMeetsTheBlock) {
             }
     EXPECT_GE(met, 2) << "lone nodes met the block in too few impacts to test their contact";
 }
-
-// The same lone nodes meet other stems and their own stem's pieces as spheres of their own diameter.
-// They fell through them: 0.14-0.21 m into the 30 and 40 cm stems below them after impacts at 15 and
-// 25 m/s (the depth the block's own test measures, here of every lone node into every intact
-// connection). Now no deeper than two stems overlap under a stem/stem contact, as in
-// ABrokenTopDoesNotFallThroughItsStump (0.1-1.3 cm here). A stem thicker than the node spacing is
-// left out: there a node left alone is born inside its neighbours' cylinders (a 60 cm stem's radii
-// sum to 0.6 m over 0.5 m), which the contact takes as its start (docs/model-stems.md).
-TEST(ExtremeForest, ALoneNodeDoesNotFallThroughItsStem) {
-    for (const char* dbh : {"30", "40"})
-        for (const char* speed : {"15", "25"}) {
-            const Scene scene(singleTree({std::string("tree.dbh_cm=") + dbh, std::string("block.speed_m_s=") + speed}));
-            BlockMotion m(scene, drawRelease(scene, 1));
-            double deepest = -1;
-            bool lone = false;
-            while (m.time() < 3) {
-                m.step();
-                const Stem* s = m.forest().awakeStem(0);
-                if (!s) continue;
-                for (std::size_t k = 1; k < s->nodeCount(); ++k) {
-                    if (!s->broken(k - 1) || (k < s->connectionCount() && !s->broken(k))) continue;
-                    lone = true;
-                    const Vec3& p = s->position[k];
-                    for (std::size_t c = 0; c < s->connectionCount(); ++c) {
-                        if (s->broken(c)) continue;
-                        const Vec3 &a = s->position[c], &b = s->position[c + 1];
-                        deepest = std::max(deepest, 0.5 * (s->diameterAt(s->restHeight(k)) + s->connectionDiameter(c)) -
-                                                        (p - a - closestOnSegment(p, a, b) * (b - a)).norm());
-                    }
-                }
-            }
-            std::printf("%s cm at %s m/s: a lone node at most %.3f m into its stem\n", dbh, speed, deepest);
-            ASSERT_TRUE(lone) << dbh << " cm at " << speed << " m/s: no node was left between two breaks";
-            EXPECT_LT(deepest, 0.05) << dbh << " cm at " << speed << " m/s";
-        }
-}

@@ -1,6 +1,5 @@
 // Leaving out what the block does not touch is safe: the same run with every stem awake from the
-// start, at the same time step, gives the same block motion (stems woken as the block comes near,
-// and stepped only once something touches them).
+// start, at the same time step, gives the same block motion.
 #include <gtest/gtest.h>
 
 #include "DemTestScenes.hpp"
@@ -33,15 +32,11 @@ sylva::stand::Forest band() {
 
 // At one forced step: letting the step follow what is awake also changes the block's path on the
 // soil (its own time-step error, chaotic over seconds of tumbling: docs/accuracy.md), which is
-// not what this compares. Nor are resting and sleeping, which the reference never does: they stop
-// broken pieces where they are (docs/model-stems.md, "Sleeping follows motion"), and here the crown
-// tip of a broken stem, stopped, no longer falls on the stem the block strikes last (2.8 mm apart
-// after 4 s). That is measured where it matters, on PF50 (docs/performance.md, "Resting in place").
+// not what this compares.
 Vec3 runFor(double seconds, bool allAwake, std::size_t& impacts) {
     const Scene scene(sylva::dem::testing::straightSlopeScene(
                           35, 120, 20,
                           {"release.x_m=10", "release.y_min_m=10", "release.y_max_m=10", "integration.dt_s=2e-5",
-                           "forest.return_horizon_s=3600", "forest.sleep_after_s=100", "forest.piece_max_time_s=100",
                            std::string("forest.all_awake=") + (allAwake ? "true" : "false")}),
                       band());
     BlockMotion m(scene, drawRelease(scene, 3));
@@ -62,8 +57,7 @@ TEST(ValidationLeavingOut, AllAwakeReferenceGivesTheSameBlockMotion) {
     EXPECT_EQ(impactsLeft, impactsAll);
     // Same step, same contacts: what differs is that the reference steps every stem, and stems
     // standing in equilibrium move by round-off only (StemOwnWeight): on the default stems the two
-    // runs stay 5e-8 m apart over the 4 s (1e-12, at the default rest and sleep, before a broken
-    // stem's lone nodes met other stems); a woken stem not pre-compressed (its sag vibrating in the
+    // runs stay 1e-12 m apart over the 4 s; a woken stem not pre-compressed (its sag vibrating in the
     // reference) puts them 5e-4 m apart, which a 1 cm bar let through.
     EXPECT_LT((left - all).norm(), 1e-6);
 }

@@ -9,21 +9,6 @@
 
 namespace sylva::dem {
 
-// What connection c of a stem touches with: its axis, a0 to a1, and its radius. Broken, it leaves the
-// node above it alone if that node is between two breaks or on top (a whipped crown shattered into
-// single nodes): the node then touches as a sphere of its own diameter, as it touches the soil, and a
-// contact on it is on connection c at its upper end (nodeOnly: a0 = a1 = the node). Otherwise nothing.
-struct TouchFeature {
-    Vec3 a0, a1;
-    double radius;
-    bool nodeOnly;
-};
-inline std::optional<TouchFeature> touchFeature(const Stem& s, std::size_t c) {
-    if (!s.broken(c)) return TouchFeature{s.position[c], s.position[c + 1], 0.5 * s.connectionDiameter(c), false};
-    if (c + 1 < s.connectionCount() && !s.broken(c + 1)) return std::nullopt;
-    return TouchFeature{s.position[c + 1], s.position[c + 1], 0.5 * s.diameterAt(s.restHeight(c + 1)), true};
-}
-
 struct ConnectionTouch {
     double s, t;               // where along connection A and connection B, in [0, 1] from their lower node
     ContactGeometry geometry;  // normal from B to A, overlap, point, radii; velocities are the caller's
@@ -39,7 +24,7 @@ struct PlantedStem {
 // so close that their cones meet near the foot, and there they are one fused stump, not a contact.
 bool fusedAtRest(const PlantedStem& A, std::size_t ca, const PlantedStem& B, std::size_t cb);
 
-// Whether connection `ca` of stem A touches connection `cb` of stem B (their touchFeature), and where.
+// Whether intact connection `ca` of stem A touches intact connection `cb` of stem B, and where.
 // A touch at a connection's lower node, where the intact connection below holds the same node, is
 // that connection's: it finds the same touch, or a closer one, with a radius no smaller (stems taper
 // upwards), so the node is counted once. Counted by both, a node bent against a neighbour pushed it

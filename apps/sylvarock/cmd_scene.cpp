@@ -40,7 +40,7 @@ StemCount writeStemsCsv(const std::string& path, const dem::Scene& scene) {
         for (std::size_t k = 0; k < stem.nodeCount(); ++k) {
             const dem::Vec3& p = stem.position[k];
             out << t.id << ',' << k << ',' << p.x() << ',' << p.y() << ',' << p.z() << ','
-                << 0.5 * stem.diameterAt(stem.restHeight(k)) << ',' << static_cast<long>(k) - 1 << ','
+                << stem.nodeRadius(k) << ',' << static_cast<long>(k) - 1 << ','
                 << 100 * t.geometry.dbh << ',';
             if (stool) out << *stool;
             out << '\n';

@@ -55,11 +55,12 @@ std::uint32_t pieceStart(const Stem& s, std::size_t c, double t) {
     return static_cast<std::uint32_t>(c);
 }
 
-// What the block touches of connection c: its axis, a0 to a1, and its radius. Broken, it leaves the
-// node above it alone if that node is between two breaks or on top (a whipped crown shattered into
-// single nodes): that node keeps its mass, a crown tip of a few kilograms, and meets the block as a
-// sphere of its own diameter, as it meets the soil; a contact on it is on connection c at its upper
-// end (nodeOnly: a0 = a1 = the node). Otherwise nothing.
+// What the block touches of connection c: its axis, a0 to a1, and its radius. Broken, c stands for
+// node c + 1 when that node is alone (connection c + 1 broken too, or c + 1 the top node): such a node
+// keeps its mass, a crown tip of a few kilograms, and meets the block as a sphere, as it meets the
+// soil. Its contact is on connection c at t = 1 (nodeOnly: closestOnSegment would put a zero-length
+// segment's closest point at t = 0, on node c), so that its force, velocity and step bound are node
+// c + 1's. Otherwise nothing.
 struct BlockFeature {
     Vec3 a0, a1;
     double radius;
@@ -68,7 +69,7 @@ struct BlockFeature {
 std::optional<BlockFeature> blockFeature(const Stem& s, std::size_t c) {
     if (!s.broken(c)) return BlockFeature{s.position[c], s.position[c + 1], 0.5 * s.connectionDiameter(c), false};
     if (c + 1 < s.connectionCount() && !s.broken(c + 1)) return std::nullopt;
-    return BlockFeature{s.position[c + 1], s.position[c + 1], 0.5 * s.diameterAt(s.restHeight(c + 1)), true};
+    return BlockFeature{s.position[c + 1], s.position[c + 1], s.nodeRadius(c + 1), true};
 }
 
 }  // namespace
@@ -172,8 +173,9 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
 // Pairs of connections of different awake stems, or of two pieces of a broken one, that may touch:
 // within their radii plus the skin of each other when listed. The list holds until some node has
 // moved half the skin (then no pair left out can have closed the skin), the awake stems change or a
-// connection breaks. A node between two broken connections has no connection left to touch with:
-// a fragment that small falls through stems (docs/model-stems.md).
+// connection breaks. A node alone between two breaks meets the block (blockFeature) but not stems:
+// as a sphere here it cost a fifth of a forested run's CPU (docs/model-stems.md, "… but not yet
+// other stems").
 void ForestMotion::listStemPairs() {
     stemPairs_.clear();
     // Boxes around each awake stem's nodes, widened by its thickest radius and the skin: most pairs
@@ -314,7 +316,7 @@ void ForestMotion::detectStemSoil() {
         if (a.surfaceSeen.size() != s.nodeCount()) a.surfaceSeen.assign(s.nodeCount(), Vec3::Constant(kNaN));
         for (std::uint32_t k = 1; k < s.nodeCount(); ++k) {
             const Vec3& p = s.position[k];
-            const double r = 0.5 * s.diameterAt(s.restHeight(k));
+            const double r = s.nodeRadius(k);
             // Soil tops are at the surface: a node this high above it touches none. The height seen
             // last, raised by the steepest rise over the distance moved since, is as high as the
             // surface under it can be (kRounding: the height's own rounding, a few ulps).

@@ -46,7 +46,7 @@ bool StemActivity::displaced(const Stem& s, std::size_t node, const PlacedTree& 
 }
 
 double StemActivity::nodeReach(const Stem& s, std::size_t node, double dt, int stepsBetweenChecks) const {
-    const double r = 0.5 * s.diameterAt(s.restHeight(node));
+    const double r = s.nodeRadius(node);
     return r + cfg_.wakeMargin + s.velocity[node].norm() * dt * 2 * stepsBetweenChecks;
 }
 
@@ -72,19 +72,18 @@ bool StemActivity::blockCanReach(const RigidBody& block, const Stem& s, double g
         if (gap <= 0) return true;
         return gap < (blockVelocity - velocity).dot(d) / distance * horizon;
     };
-    const auto radiusAt = [&](std::size_t node) { return 0.5 * s.diameterAt(s.restHeight(node)); };
     // Each node, and each intact connection at its point closest to the block (the stem is a cone
     // between its nodes, and that point of the axis moves with the velocities of its nodes, weighed
     // by where it lies). The closing speed depends on the direction: a node the block falls
     // towards may close its gap first although the connection's closest point does not.
     for (std::size_t i = 0; i < s.nodeCount(); ++i)
-        if (reaches(s.position[i], radiusAt(i), s.velocity[i])) return true;
+        if (reaches(s.position[i], s.nodeRadius(i), s.velocity[i])) return true;
     for (std::size_t c = 0; c < s.connectionCount(); ++c) {
         if (s.broken(c)) continue;
         const Vec3 &a = s.position[c], &b = s.position[c + 1];
         const double t = closestOnSegment(block.position, a, b);
         const Vec3 velocity = (1 - t) * s.velocity[c] + t * s.velocity[c + 1];
-        if (reaches(a + t * (b - a), radiusAt(c) + t * (radiusAt(c + 1) - radiusAt(c)), velocity)) return true;
+        if (reaches(a + t * (b - a), s.nodeRadius(c) + t * (s.nodeRadius(c + 1) - s.nodeRadius(c)), velocity)) return true;
     }
     return false;
 }

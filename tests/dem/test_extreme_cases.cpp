@@ -519,7 +519,7 @@ TEST(ExtremeForest, ABrokenTopDoesNotFallThroughItsStump) {
             for (std::size_t c = 0; c < k; ++c) {
                 const Vec3 &a = s->position[c], &b = s->position[c + 1], &p = s->position[i];
                 const Vec3 closest = a + closestOnSegment(p, a, b) * (b - a);
-                const double overlap = 0.5 * (s->diameterAt(s->restHeight(i)) + s->connectionDiameter(c)) - (p - closest).norm();
+                const double overlap = s->nodeRadius(i) + 0.5 * s->connectionDiameter(c) - (p - closest).norm();
                 deepest = std::max(deepest, overlap);
             }
     }
@@ -644,11 +644,13 @@ TEST(ExtremeEnergyAudit, GrowthAboveTheToleranceStopsTheRunNamingWhereItAppeared
         << m;
 }
 
-// A whipped crown shatters into single nodes, each between two broken connections (a node in every
-// MO1 A run, docs/model-stems.md). Such a node kept its mass but met only the soil: the block passed
-// through it (0.11-0.20 m deep in five of these impacts, deeper than the intact connections went).
-// It now meets the block as a sphere of its own diameter, so it sinks into the block no deeper than
-// the stem's intact connections do in the same impact (the crushing contact dents those by 3-9 cm).
+// A whipped crown shatters into single nodes, each between two broken connections or on top of a
+// broken last one (36 in an MO1 A run on average, docs/model-stems.md). Such a node kept its mass but
+// met only the soil: the block passed through it (0.11-0.20 m deep in five of these impacts, deeper
+// than the intact connections went). It now meets the block as a sphere of its own diameter, so it
+// sinks into the block no deeper than the stem's intact connections do in the same impact (the
+// crushing contact dents those by 3-9 cm; the lone nodes go 0.6-5.5 cm). Lone nodes meet the block in
+// 8 of these 16 impacts; fewer than 4 and the test says too little about their contact.
 TEST(ExtremeForest, ANodeBetweenTwoBreaksMeetsTheBlock) {
     int met = 0;
     for (const char* dbh : {"15", "20", "25", "30"})
@@ -671,7 +673,7 @@ TEST(ExtremeForest, ANodeBetweenTwoBreaksMeetsTheBlock) {
                             if (!s->broken(c))
                                 intact = std::max(intact, rb + 0.5 * s->connectionDiameter(c) - (p - a0 - closestOnSegment(p, a0, a1) * (a1 - a0)).norm());
                             else if (c + 1 == s->connectionCount() || s->broken(c + 1))
-                                lone = std::max(lone, rb + 0.5 * s->diameterAt(s->restHeight(c + 1)) - (p - a1).norm());
+                                lone = std::max(lone, rb + s->nodeRadius(c + 1) - (p - a1).norm());
                         }
                     }
                 }
@@ -681,5 +683,5 @@ TEST(ExtremeForest, ANodeBetweenTwoBreaksMeetsTheBlock) {
                 ++met;
                 EXPECT_LE(lone, intact) << dbh << " cm at " << speed << " m/s, " << height << " m up";
             }
-    EXPECT_GE(met, 2) << "lone nodes met the block in too few impacts to test their contact";
+    EXPECT_GE(met, 4) << "lone nodes met the block in too few impacts to test their contact";
 }

@@ -185,7 +185,7 @@ TEST(StemActivity, DisplacedNodeWakesTheNeighboursItCanTouch) {
     s.position[i] += Vec3(2, 0, 0);
     EXPECT_TRUE(StemActivity::displaced(s, i, own));
     // At rest its reach is its radius and the margin; moving at 4 m/s, twice its travel is added.
-    const double r = 0.5 * s.diameterAt(s.restHeight(i));
+    const double r = s.nodeRadius(i);
     EXPECT_DOUBLE_EQ(activity.nodeReach(s, i, 1e-4, 10), r + 0.1);
     s.velocity[i] = Vec3(4, 0, 0);
     EXPECT_NEAR(activity.nodeReach(s, i, 1e-4, 10), r + 0.1 + 4 * 1e-4 * 2 * 10, 1e-12);

@@ -117,7 +117,9 @@ private:
     // connections this step).
     struct BlockStemTouch {
         // piece: the lowest connection of the stem's piece it touches (0: the standing stem); a
-        // piece that breaks off above keeps the contacts on it (detectBlockStem).
+        // piece that breaks off above keeps the contacts on it (detectBlockStem). A node alone between
+        // two breaks, or on top of a broken connection, is a piece named by the connection above it
+        // (connectionCount() for the top node); its contact is on the broken connection below, t = 1.
         std::uint32_t blockSphere, tree, piece;
         std::size_t connection;
         double t;           // where along the connection

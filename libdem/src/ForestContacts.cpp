@@ -174,7 +174,7 @@ void ForestMotion::detectBlockStem(const RigidBody& block, const std::vector<Vec
 // within their radii plus the skin of each other when listed. The list holds until some node has
 // moved half the skin (then no pair left out can have closed the skin), the awake stems change or a
 // connection breaks. A node alone between two breaks meets the block (blockFeature) but not stems:
-// as a sphere here it cost a fifth of a forested run's CPU (docs/model-stems.md, "… but not yet
+// as a sphere here it added a fifth to a forested run's CPU (docs/model-stems.md, "… but not yet
 // other stems").
 void ForestMotion::listStemPairs() {
     stemPairs_.clear();

@@ -65,7 +65,8 @@ public:
     bool rotates(std::size_t node) const { return node > 0 || support_ == StemFoot::RootSpring; }
     double restHeight(std::size_t node) const { return restHeight_[node]; }  // above the foot, unloaded
     double diameterAt(double heightAboveFoot) const;
-    // The sphere a node touches the soil with, and the block once both its connections are broken.
+    // The sphere a node touches the soil with, and the block once the connections on both sides of it
+    // are broken (the top node: its one).
     double nodeRadius(std::size_t node) const { return 0.5 * diameterAt(restHeight(node)); }
     double connectionLength(std::size_t c) const { return connections_[c].length; }  // l, between nodes c and c+1
     double connectionDiameter(std::size_t c) const { return connections_[c].diameter; }  // D_con, between nodes c and c+1

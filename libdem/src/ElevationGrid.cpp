@@ -6,13 +6,16 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "libcommon/InputError.hpp"
+#include "libdem/EarthRelief.hpp"
 
 namespace sylva::dem {
 namespace {
@@ -32,15 +35,12 @@ std::optional<double> parseNumber(const std::string& s) {
     return v;
 }
 
-// Earth's relief runs from -10 935 m (the Challenger Deep) to 8 849 m (Everest). A height beyond it
-// is a NODATA marker the file does not declare (GDAL's float32 -3.4e38, 1e30): read as terrain, it
-// made a wall kilometres high and run-outs of 1e38 m.
-bool onEarth(double z) { return z >= -11000 && z <= 9000; }
+const char* const kUndeclaredNoData =
+    "a NODATA value the file does not declare? Declare it (NODATA_value in an ESRI ASCII header; gdal_translate "
+    "-a_nodata for other formats)";
 
 std::string offEarth(double z) {
-    return "height " + readableNumber(z) + " m is beyond Earth's relief (-11 000 to 9 000 m): a NODATA value "
-           "the file does not declare? Declare it (NODATA_value in an ESRI ASCII header; gdal_translate -a_nodata "
-           "for other formats)";
+    return "height " + readableNumber(z) + " m is beyond Earth's relief (-11 000 to 9 000 m): " + kUndeclaredNoData;
 }
 
 std::string lower(std::string s) {
@@ -192,6 +192,7 @@ ElevationGrid ElevationGrid::readAsc(const std::string& path) {
     g.z_.reserve(static_cast<std::size_t>(g.ncols_) * g.nrows_);
     for (const auto& row : fileRows) g.z_.insert(g.z_.end(), row.begin(), row.end());
     g.complete_ = g.noDataCells() == 0;
+    g.refuseImpossibleFaces();
     return g;
 }
 
@@ -233,11 +234,47 @@ ElevationGrid ElevationGrid::fromValues(int columns, int rows, double x0, double
     const auto off = std::find_if(g.z_.begin(), g.z_.end(), [](double v) { return !std::isnan(v) && !onEarth(v); });
     if (off != g.z_.end()) {
         const long i = off - g.z_.begin();
-        throw InputError(g.source_, 0, "cell (column " + std::to_string(i % columns + 1) + ", row " + std::to_string(rows - i / columns) +
-                                           ", counted from 1 at the north-west corner): " + offEarth(*off));
+        throw InputError(g.source_, 0, g.cellPlace(static_cast<int>(i % columns), static_cast<int>(i / columns)) + ": " + offEarth(*off));
     }
     g.complete_ = g.noDataCells() == 0;
+    g.refuseImpossibleFaces();
     return g;
+}
+
+void ElevationGrid::refuseImpossibleFaces() const {
+    // Of two cells too far apart, the one farther from the grid's median height is the odd one (the
+    // median taken only then: a large DTM holds millions of cells).
+    const auto median = [this] {
+        std::vector<double> defined;
+        std::copy_if(z_.begin(), z_.end(), std::back_inserter(defined), [](double v) { return !std::isnan(v); });
+        const auto middle = defined.begin() + static_cast<std::ptrdiff_t>(defined.size() / 2);
+        std::nth_element(defined.begin(), middle, defined.end());
+        return *middle;
+    };
+    const double limit = kSteepestRise * cell_;
+    for (int row = nrows_ - 1; row >= 0; --row)  // north first: the first error reported is the first in the file
+        for (int col = 0; col < ncols_; ++col) {
+            const double z = at(col, row);
+            if (std::isnan(z)) continue;
+            for (const auto& [c, r] : {std::pair<int, int>{col + 1, row}, std::pair<int, int>{col, row - 1}}) {
+                if (c >= ncols_ || r < 0 || std::isnan(at(c, r)) || std::abs(at(c, r) - z) <= limit) continue;
+                const double m = median();
+                const bool first = std::abs(z - m) >= std::abs(at(c, r) - m);
+                const int oddCol = first ? col : c, oddRow = first ? row : r;
+                const int nextCol = first ? c : col, nextRow = first ? r : row;
+                const double odd = at(oddCol, oddRow), next = at(nextCol, nextRow);
+                throw InputError(source_, rowLine_.empty() ? 0 : rowLine_[oddRow],
+                                 cellPlace(oddCol, oddRow) + ": height " + readableNumber(odd) + " m lies " +
+                                     readableNumber(std::round(std::abs(odd - next))) + " m " + (odd < next ? "below" : "above") +
+                                     " its neighbour's (" + readableNumber(std::round(next * 100) / 100) + " m) over a cell of " + readableNumber(cell_) +
+                                     " m, steeper than any terrain (89 degrees): " + kUndeclaredNoData);
+            }
+        }
+}
+
+std::string ElevationGrid::cellPlace(int col, int row) const {
+    if (!rowLine_.empty()) return "value " + std::to_string(col + 1);
+    return "cell (column " + std::to_string(col + 1) + ", row " + std::to_string(nrows_ - row) + ", counted from 1 at the north-west corner)";
 }
 
 long ElevationGrid::noDataCells() const {
@@ -245,14 +282,9 @@ long ElevationGrid::noDataCells() const {
 }
 
 void ElevationGrid::failNoData(int col, int row) const {
-    if (rowLine_.empty())
-        throw InputError(source_, 0,
-                         "cell (column " + std::to_string(col + 1) + ", row " + std::to_string(nrows_ - row) +
-                             ", counted from 1 at the north-west corner) is NODATA, but the terrain needs it (cell centre x = " + std::to_string(x0_ + col * cell_) +
-                             ", y = " + std::to_string(y0_ + row * cell_) + ")");
-    throw InputError(source_, rowLine_[row],
-                     "value " + std::to_string(col + 1) + " is NODATA, but the terrain needs it (cell centre x = " +
-                         std::to_string(x0_ + col * cell_) + ", y = " + std::to_string(y0_ + row * cell_) + ")");
+    throw InputError(source_, rowLine_.empty() ? 0 : rowLine_[row],
+                     cellPlace(col, row) + " is NODATA, but the terrain needs it (cell centre x = " + std::to_string(x0_ + col * cell_) +
+                         ", y = " + std::to_string(y0_ + row * cell_) + ")");
 }
 
 double ElevationGrid::height(double x, double y) const {

@@ -7,6 +7,7 @@
 
 #include "libcommon/CsvTable.hpp"
 #include "libcommon/InputError.hpp"
+#include "libdem/EarthRelief.hpp"
 
 namespace sylva::dem {
 namespace {
@@ -71,6 +72,16 @@ SlopeProfile SlopeProfile::readCsv(const std::string& path) {
         t.fail(i, cx,
                "x = " + t.text(i, cx) + " does not increase (previous point, line " + std::to_string(t.lineOf(i - 1)) +
                    ", has x = " + t.text(i - 1, cx) + "); x must increase strictly");
+    for (std::size_t i = 0; i < z.size(); ++i)
+        if (!onEarth(z[i]))
+            t.fail(i, cz, "z = " + t.text(i, cz) + " m is beyond Earth's relief (-11 000 to 9 000 m): a NODATA value? "
+                          "Remove the point");
+    for (std::size_t i = 1; i < z.size(); ++i)
+        if (std::abs(z[i] - z[i - 1]) > kSteepestRise * (x[i] - x[i - 1]))
+            t.fail(i, cz,
+                   "z = " + t.text(i, cz) + " m at x = " + t.text(i, cx) + " m, after z = " + t.text(i - 1, cz) +
+                       " m at x = " + t.text(i - 1, cx) + " m (line " + std::to_string(t.lineOf(i - 1)) +
+                       "): steeper than any terrain (89 degrees); a NODATA value (-9999?) left in the profile? Remove it");
     // Run-out is measured down the slope along +x: a profile climbing with x sends every block off its top edge.
     if (z.back() > z.front())
         t.fail(t.rows() - 1, cz,

@@ -136,9 +136,28 @@ TEST(ElevationGridReader, AHeightBeyondEarthsReliefIsAnUndeclaredNodata) {
         EXPECT_EQ(e.file(), "dtm.tif");
         EXPECT_TRUE(contains(e.what(), "column 3, row 1")) << e.what();
     }
-    z.back() = 8848.9;  // Everest, and the Dead Sea shore below
+    z.back() = 8848.9;  // Everest, and the Dead Sea shore below, on cells of 200 m (no face steeper than 89 degrees)
     z.front() = -430;
-    EXPECT_NO_THROW(ElevationGrid::fromValues(3, 2, 0.5, 0.5, 1, z, "dtm.tif"));
+    EXPECT_NO_THROW(ElevationGrid::fromValues(3, 2, 100, 100, 200, z, "dtm.tif"));
+}
+
+// A hole filled with -9999, inside Earth's relief, that the file does not declare NODATA: read as
+// ground, it was a pit 10 km deep where every block of a hazard map stopped (paths of 344 km, no
+// warning). No terrain face is steeper than 89 degrees over a whole cell; the cell farther from the
+// grid's median height is named.
+TEST(ElevationGridReader, AHoleOfUndeclaredNodataSteeperThanAnyTerrainIsRefused) {
+    expectError("grid_undeclared_hole.asc", 7, "value 2: height -9999 m lies 10409 m below its neighbour's (410 m) over a cell of 2 m");
+    // The same values from GDAL (row 0 the southernmost).
+    std::vector<double> z = {409.5, 407.0, 404.5, 402.0, 411.0, -9999, 406.0, 403.5, 412.5, 410.0, 407.5, 405.0};
+    try {
+        ElevationGrid::fromValues(4, 3, 1, 1, 2, z, "dtm.tif");
+        ADD_FAILURE() << "-9999 m beside 410 m was accepted";
+    } catch (const InputError& e) {
+        EXPECT_TRUE(contains(e.what(), "cell (column 2, row 2, counted from 1 at the north-west corner): height -9999 m")) << e.what();
+    }
+    // A cliff as steep as a DTM holds one: 110 m over a 2 m cell (88.96 degrees).
+    z[5] = 411.0 - 110;
+    EXPECT_NO_THROW(ElevationGrid::fromValues(4, 3, 1, 1, 2, z, "dtm.tif"));
 }
 
 // grid_nodata.asc: 4 x 3 cells of 1 m, corner (0, 0); the NODATA cell is value 3 of line 8, the

@@ -77,6 +77,17 @@ TEST(SlopeProfileReader, AProfileRisingAlongXIsRefused) {
     EXPECT_TRUE(contains(e.what(), "rises along x (z 5 m at x = 0 m, 8 m at x = 20 m)")) << e.what();
 }
 
+// A NODATA value left in a profile: -9999 lies within Earth's relief, and read as ground it made a
+// pit 10 km deep, run-outs of 10 km and 8 million soil spheres; 5e30 lies beyond it.
+TEST(SlopeProfileReader, ANodataValueLeftInTheProfileIsRefused) {
+    InputError e = readError("profile_nodata_point.csv");
+    EXPECT_EQ(e.line(), 4);
+    EXPECT_TRUE(contains(e.what(), "z = -9999 m at x = 300 m, after z = 300 m at x = 200 m (line 3): steeper than any terrain")) << e.what();
+    e = readError("profile_off_earth.csv");
+    EXPECT_EQ(e.line(), 3);
+    EXPECT_TRUE(contains(e.what(), "z = 5e30 m is beyond Earth's relief")) << e.what();
+}
+
 TEST(SlopeProfileReader, OnePointIsNotAProfile) {
     const InputError e = readError("profile_one_point.csv");
     EXPECT_EQ(e.line(), 3);

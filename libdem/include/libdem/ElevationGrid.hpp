@@ -12,15 +12,16 @@ namespace sylva::dem {
 class ElevationGrid {
 public:
     // Errors (bad or missing header key, non-numeric value, a row with the wrong number of values,
-    // too few or too many rows, a height beyond Earth's relief: an undeclared NODATA) name the file
-    // and the line. NODATA cells are accepted here and rejected only where a height is needed (see
+    // too few or too many rows, a height beyond Earth's relief or a neighbour steeper than 89 degrees
+    // away: an undeclared NODATA) name the file and the line. NODATA cells are accepted here and rejected only where a height is needed (see
     // requireDefined).
     static ElevationGrid readAsc(const std::string& path);
     // A grid read by someone else (e.g. GDAL): `z` row-major with row 0 the southernmost, NaN for
     // NODATA; (x0, y0) the centre of the south-west cell. Errors about a NODATA cell then name the
     // cell (column and row counted from 1 at the north-west corner) in `source`.
     // Throws std::invalid_argument on fewer than 2 x 2 cells, a size mismatch or a cell size <= 0;
-    // InputError naming the cell of a height beyond Earth's relief (an undeclared NODATA).
+    // InputError naming the cell of a height beyond Earth's relief or steeper than 89 degrees from a
+    // neighbour (an undeclared NODATA).
     static ElevationGrid fromValues(int columns, int rows, double x0, double y0, double cellSize, std::vector<double> z,
                                     std::string source);
 
@@ -55,6 +56,9 @@ private:
     CellRange cellsUnder(double x0, double x1, double y0, double y1) const;
     double at(int col, int row) const { return z_[static_cast<std::size_t>(row) * ncols_ + col]; }
     [[noreturn]] void failNoData(int col, int row) const;
+    // Where a cell is named in an error: its file line and value, or its column and row.
+    std::string cellPlace(int col, int row) const;
+    void refuseImpossibleFaces() const;
 
     int ncols_ = 0, nrows_ = 0;
     double x0_ = 0, y0_ = 0, cell_ = 1;  // centre of the south-west cell

@@ -129,6 +129,8 @@ int threadCount(const po::variables_map& vm) {
 }
 
 std::vector<double> numberList(const std::string& option, const std::string& text, std::size_t n) {
+    const std::string expected = n != 0 ? std::to_string(n) + " comma-separated numbers" : "a comma-separated list of numbers";
+    if (text.empty()) throw InputError("--" + option + " is empty: expected " + expected);
     std::vector<double> out;
     std::stringstream ss(text);
     std::string item;
@@ -141,7 +143,7 @@ std::vector<double> numberList(const std::string& option, const std::string& tex
         out.push_back(v);
     }
     // getline drops the empty word after a last comma: "130,0,630,200," read as four numbers.
-    if (text.empty() || text.back() == ',')
+    if (text.back() == ',')
         throw InputError("--" + option + ": '" + text + "' ends without a number (expected a comma-separated list)");
     if (n != 0 && out.size() != n)
         throw InputError("--" + option + ": expected " + std::to_string(n) + " comma-separated numbers, got " +

@@ -80,6 +80,10 @@ TEST(GenerateCli, BadOptionsExitWithStatusTwoAndSayWhy) {
     r = generate("--structure random --extent 0,0,100,50," + out);
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.output.find("--extent: '0,0,100,50,' ends without a number"), std::string::npos) << r.output;
+    // An empty value (a shell variable left unset) was told it "ends without a number".
+    r = generate("--structure random --extent ''" + out);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("--extent is empty: expected 4 comma-separated numbers"), std::string::npos) << r.output;
     r = generate("--structure random --extent 0,0,100,50 --realisations 0" + out);
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.output.find("--realisations"), std::string::npos) << r.output;

@@ -99,7 +99,7 @@ BlockMotion::BlockMotion(const Scene& scene, const Release& start)
         os.precision(4);
         os << "the block is released inside the soil at " << where(start.position);
         if (height < 0) os << " (its centre " << -height << " m below the surface)";
-        throw InputError(cfg_.sourceFile, 0, os.str() + ": raise release.fall_height_m");
+        throw cfg_.refusal({"release.fall_height_m"}, os.str() + ": raise release.fall_height_m");
     }
     refuseSoilTooSoft(scene);
     refuseStartInsideStem(scene);

@@ -80,6 +80,12 @@ Release drawRelease(const Scene& scene, std::uint64_t seed, const std::optional<
             what + " (" + readableNumber(x) + ", " + readableNumber(y) + ") is outside the terrain (" + soil.boundsText() + ")" + remedy;
         if (!xOut) xKeys.clear();
         if (yOut) xKeys.insert(xKeys.end(), yKeys.begin(), yKeys.end());
+        // Then the terrain's: a profile or a DTM changed on --set moved the terrain from under an
+        // unchanged release, and the file's release line was named.
+        if (!xKeys.empty()) {
+            if (xOut) xKeys.insert(xKeys.end(), {"terrain.profile", "terrain.dtm"});
+            if (yOut) xKeys.insert(xKeys.end(), {"terrain.width_m", "terrain.dtm"});
+        }
         throw xKeys.empty() ? InputError(message) : cfg.refusal(xKeys, message);
     };
     if (cfg.launch.enabled) {

@@ -196,13 +196,19 @@ TEST(SceneExportCli, WritesTheReleaseOfTheRunAskedAndTheBlockSoilLaw) {
     EXPECT_FALSE(std::filesystem::exists(dir / "bad"));
     const CliRun outside = sceneExport(common + "--set release.x_m=5000 --out " + (dir / "outside").string());
     EXPECT_EQ(outside.status, 2) << outside.output;
-    EXPECT_NE(outside.output.find("outside the terrain"), std::string::npos) << outside.output;
+    EXPECT_NE(outside.output.find("--set release.x_m: release point (5000, "), std::string::npos) << outside.output;
     EXPECT_FALSE(std::filesystem::exists(dir / "outside"));
+    // A terrain changed on --set under an unchanged release names the terrain, not the release's line.
+    const CliRun shorter = sceneExport(common + "--set terrain.profile=" + std::string(SYLVAROCK_DATA) + "/slopes/flat.csv --out " + (dir / "shorter").string());
+    EXPECT_EQ(shorter.status, 2) << shorter.output;
+    EXPECT_NE(shorter.output.find("--set terrain.profile: release point"), std::string::npos) << shorter.output;
     // What simulate refuses to start is refused too: the block inside the soil, a soil too soft to hold it.
     for (const char* start : {"--set release.fall_height_m=0.1", "--set soil.kn_n_m=1000"}) {
         const CliRun refused = sceneExport(common + start + " --out " + (dir / "unstartable").string());
         EXPECT_EQ(refused.status, 2) << start << "\n" << refused.output;
-        EXPECT_NE(refused.output.find(std::string(start).find("fall") != std::string::npos ? "released inside the soil" : "more than a soil sphere's radius"),
+        // Named by the key typed on --set: the scene file's name led to a line the user had not changed.
+        EXPECT_NE(refused.output.find(std::string(start).find("fall") != std::string::npos ? "--set release.fall_height_m: the block is released inside the soil"
+                                                                                           : "more than a soil sphere's radius"),
                   std::string::npos) << refused.output;
         EXPECT_FALSE(std::filesystem::exists(dir / "unstartable"));
     }

@@ -432,6 +432,13 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
                         "; three edges make a block.shape = cuboid");
     requireRead("block.volume_m3", c.block.shape != BlockShapeKind::Cuboid, {"block.shape"},
                 "a cuboid's volume is block.d1_m x d2_m x d3_m");
+    // A cube's edge replaced its volume without a word (d1_m = 2 beside volume_m3 = 0.5: 8 m3); a file's
+    // volume gives way to an edge typed on --set.
+    const double edgeVolume = c.block.d1 * c.block.d1 * c.block.d1;
+    requireRead("block.volume_m3",
+                c.block.shape != BlockShapeKind::Cube || !vm.count("block.d1_m") || std::abs(c.block.volumeM3 - edgeVolume) <= 1e-9 * edgeVolume,
+                {"block.d1_m"},
+                "block.d1_m = " + text(c.block.d1) + " sets the cube's size too (" + text(edgeVolume) + " m3); give one of the two");
     const std::string dampingSource = "stem.damping = " + damping + (vm["stem.damping"].defaulted() ? " (stem.parameters = " + c.stemParameters + ")" : "");
     requireRead("stem.tau_s", c.stem.bending.damping == StemDamping::Viscous, {"stem.damping", "stem.parameters"},
                 "it is the viscous damping's (Eqs. 7-8), and " + dampingSource + "; set stem.damping = viscous with it");
@@ -462,7 +469,7 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
                                  : "release.y_min_m = " + text(c.release.yMin) + " is above release.y_max_m = " + text(c.release.yMax));
     }
     if (vm.count("soil.restitution")) c.soilContact.dampingRatio = dampingRatioFromRestitution(keys.restitution);
-    if (c.block.shape == BlockShapeKind::Cube && vm.count("block.d1_m")) c.block.volumeM3 = c.block.d1 * c.block.d1 * c.block.d1;
+    if (c.block.shape == BlockShapeKind::Cube && vm.count("block.d1_m")) c.block.volumeM3 = edgeVolume;
     // The clump's spheres have a quarter of the shortest edge (Eq. 1), so their number grows with the
     // square of the edges' ratio: 20 x 20 x 0.001 m would take 2e10 spheres. A ratio of 10 still
     // allows 4 600 spheres (a cube has 27); a limit of cost, not a measured bound on rock shapes.

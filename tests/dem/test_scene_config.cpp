@@ -284,6 +284,15 @@ TEST(SceneConfigParser, AKeyTheSceneDoesNotReadIsRefusedNotIgnored) {
                   .find("a cuboid's volume is block.d1_m x d2_m x d3_m"),
               std::string::npos);
     EXPECT_NE(refusal({"soil.restitution=0.3", "soil.damping_ratio=0.5"}).find("give one of the two"), std::string::npos);
+    // A cube's edge and a volume that disagree (it used to take the edge's 8 m3 without a word); a
+    // file's volume gives way to an edge on --set.
+    EXPECT_NE(refusal({"block.volume_m3=0.5", "block.d1_m=2"}).find("block.d1_m = 2 sets the cube's size too (8 m3)"), std::string::npos)
+        << refusal({"block.volume_m3=0.5", "block.d1_m=2"});
+    EXPECT_EQ(refusal({"block.volume_m3=8", "block.d1_m=2"}), "");
+    const std::string cube = writeScene("cube.ini", "[block]\nvolume_m3 = 0.5\n");
+    EXPECT_NEAR(loadScene(cube, {"block.d1_m=2"}).block.volumeM3, 8, 1e-12);
+    const std::string both = writeScene("cube-both.ini", "[block]\nvolume_m3 = 0.5\nd1_m = 2\n");
+    EXPECT_NE(fileRefusal(both).find("cube-both.ini:2: block.volume_m3 is not read here"), std::string::npos) << fileRefusal(both);
 
     // In a file: named by its line, unless --set changed the choice it belonged to.
     const std::string path =

@@ -29,7 +29,7 @@ StemCount writeStemsCsv(const std::string& path, const dem::Scene& scene) {
     std::ofstream out;
     out.rdbuf()->pubsetbuf(buffer.data(), static_cast<std::streamsize>(buffer.size()));
     out.open(path);
-    if (!out) throw InputError(path, 0, "cannot open file for writing");
+    if (!out) throw cannotWrite(path);
     out << std::setprecision(9) << "tree,node,x,y,z,radius,linked_to,dbh_cm,stool\n";
     StemCount count;
     const dem::TreeField& trees = scene.trees();

@@ -62,12 +62,13 @@ constexpr long kMostRunsWithPaths = 100000;
 // folder (its path and VTK files are written again whole, once the store accepts the inputs).
 void prepareOutDir(const std::string& dir, bool resume) {
     if (dir.empty()) throw InputError("--out DIR is required");
+    if (fs::exists(dir) && !fs::is_directory(dir)) throw InputError("--out " + dir + " is a file, not a folder");
     if (resume) {
         if (!fs::is_regular_file(fs::path(dir) / "hazard.sqlite"))
             throw InputError("--resume: " + dir + " holds no map to resume (no hazard.sqlite): give the --out of the interrupted map");
         return;
     }
-    if (fs::exists(dir) && (!fs::is_directory(dir) || !fs::is_empty(dir)))
+    if (fs::exists(dir) && !fs::is_empty(dir))
         throw InputError("--out " + dir + " exists and is not an empty folder: use another --out (or --resume an interrupted map)");
     fs::create_directories(dir);
 }

@@ -198,7 +198,7 @@ double SoilBed::alongSlope(double x0, double x1, double y) const {
 
 void SoilBed::writeCsv(const std::string& path) const {
     const std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "w"), &std::fclose);
-    if (!f) throw InputError(path, 0, "cannot open for writing");
+    if (!f) throw cannotWrite(path);
     bool ok = std::fputs("x,y,z,r\n", f.get()) >= 0;
     for (std::uint32_t id = 0; ok && id < size(); ++id) {
         const Eigen::Vector3d c = center(id);

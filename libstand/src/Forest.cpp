@@ -33,7 +33,7 @@ std::optional<double> optionalNumber(const CsvTable& t, std::size_t row, std::op
 
 void writeForestCsv(const std::string& path, const Forest& forest) {
     std::ofstream out(path);
-    if (!out) throw InputError(path, 0, "cannot open file for writing");
+    if (!out) throw cannotWrite(path);
     // 10 significant digits: positions to 0.1 mm on a 100 km slope, diameters as given.
     out.precision(10);
     out << "stem,x,y,dbh_cm,species,stool,height_m,crown_length_m,crown_mass_kg\n";

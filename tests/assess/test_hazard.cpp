@@ -663,6 +663,12 @@ TEST_F(Hazard, ResumedMapRunsWhatItLacksAndEqualsTheWholeMap) {
     o.outDir = (dir_ / "nothing").string();
     fs::create_directories(o.outDir);
     EXPECT_NE(errorOf([&] { runHazard(o); }).find("holds no map to resume"), std::string::npos);
+    // A file given as --out is named as one, resumed or not (it was "holds no map to resume").
+    o.outDir = (dir_ / "a-file").string();
+    std::ofstream(o.outDir) << "x\n";
+    EXPECT_NE(errorOf([&] { runHazard(o); }).find("is a file, not a folder"), std::string::npos) << errorOf([&] { runHazard(o); });
+    o.resume = false;
+    EXPECT_NE(errorOf([&] { runHazard(o); }).find("is a file, not a folder"), std::string::npos) << errorOf([&] { runHazard(o); });
 }
 
 TEST_F(Hazard, BlockVolumesAreAListOfVolumesWithOptionalWeights) {

@@ -80,6 +80,13 @@ TEST(GenerateCli, BadOptionsExitWithStatusTwoAndSayWhy) {
     r = generate("--structure random --extent 0,0,100,50," + out);
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.output.find("--extent: '0,0,100,50,' ends without a number"), std::string::npos) << r.output;
+    // An output that cannot be written says why (it said "cannot open file for writing" alone).
+    r = generate("--structure random --extent 0,0,100,50 --out " + ::testing::TempDir());
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("is a folder: give a file's name to write"), std::string::npos) << r.output;
+    r = generate("--structure random --extent 0,0,100,50 --out " + ::testing::TempDir() + "no-such-folder/f.csv");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("no-such-folder does not exist"), std::string::npos) << r.output;
     // An empty value (a shell variable left unset) was told it "ends without a number".
     r = generate("--structure random --extent ''" + out);
     EXPECT_EQ(r.status, 2);

@@ -132,7 +132,7 @@ SceneKeys::SceneKeys(StemParameterSet set) : parameterSet(name(set)) {
     const Range modulus = closed(1e5, 1e13, "Pa", "MPa or GPa typed as Pa?");
     const Range ratio = aboveUpTo(0, 10, "");
     const Range friction = fromBelow(0, 90, "deg");
-    k.optionalOther("terrain.profile", t.profile, "slope profile CSV with columns x,z (m), x increasing and the slope falling along it (run-out is measured along +x), relative to the scene file");
+    k.optionalOther("terrain.profile", t.profile, "slope profile CSV with columns x,z (m), x increasing and the slope falling along it (run-out is measured along +x), no segment steeper than 89 degrees (a NODATA value left in it), relative to the scene file");
     k.optionalOther("terrain.dtm", t.dtm, "or a DTM as an ESRI ASCII grid (.asc)");
     k.optionalOther("forest.file", c.forestFile, "forest CSV (from sylvarock generate, or x,y,dbh_cm[,stool]); relative to the scene file");
     k.number("terrain.width_m", t.soil.width, aboveUpTo(0, 5000, "m", "", "the soil bed covers the whole width: a valley-wide strip would not fit in memory"), "extent across the slope of a profile terrain");

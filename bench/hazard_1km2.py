@@ -3,7 +3,8 @@
 area of 1 000 cells at the top, 80-900 m down the slope and 800 m across under an aggregated MO1 forest drawn
 from a stand polygon (~126 000 stems), 10 blocks per release cell (10 000 blocks). Prints the wall time and the peak memory
 of each `sylvarock hazard` run (GNU time), the model's per-block cost, and for the DEM the time 10 000 blocks
-would take at the measured rate.
+would take at the measured rate, and at the cost of one more block (from the progress lines) plus the start and
+end a map pays once.
 
     python3 bench/hazard_1km2.py build/apps/sylvarock [dem_blocks=50] [section.key=value ...]   (needs gdal-bin, /usr/bin/time)
 
@@ -63,12 +64,24 @@ def hazard(label, runs_per_cell, model, release):
     blocks = s["passes"]["forest"]["blocks"]
     print(f"{label:8s} {blocks:6d} blocks, {s['trees']} trees: wall {wall:7.1f} s, peak memory {peak:6.0f} MB, "
           f"{wall / blocks * 1e3:7.1f} ms per block; path p50 {s['passes']['forest']['path_length_m']['p50']:.0f} m", flush=True)
-    return wall, blocks
+    # The progress lines' times (whole seconds) between the first tenth and the last give the cost of one
+    # more block, without the start (DTM, forest, soil bed) and the end (rasters, figures) that a larger
+    # map pays once.
+    ticks = [(int(n), int(t)) for n, t in re.findall(r"runs (\d+)/\d+ \(\d+ %\), (\d+) s", r.stderr)]
+    if len(ticks) >= 2 and ticks[-1][0] > ticks[0][0]:
+        (n0, t0), (n1, t1) = ticks[0], ticks[-1]
+        marginal = (t1 - t0) / (n1 - n0)
+        print(f"{'':8s} one more block {marginal * 1e3:.1f} ms (runs {n0} to {n1}); start and end {wall - marginal * blocks:.1f} s", flush=True)
+        return wall, blocks, marginal
+    return wall, blocks, None
 
 print(f"1 km2 DTM of {N} x {N} cells of {CELL:g} m in {tmp}")
 hazard("lumped", 10, "lumped", release)
 # The DEM: one block from each of `dem_blocks` cells in the middle of the release area (5 cells down the
 # slope), its rate scaled to 10 000 blocks.
 middle = polygon("release-dem.geojson", 20, 500 - dem_blocks / 5, 30, 500 + dem_blocks / 5, {})
-wall, blocks = hazard("dem", 1, "dem", middle)
-print(f"dem: 10 000 blocks would take {wall / blocks * 10000 / 60:.0f} min at this rate on 2 threads")
+wall, blocks, marginal = hazard("dem", 1, "dem", middle)
+print(f"dem: 10 000 blocks would take {wall / blocks * 10000 / 60:.0f} min at this rate on 2 threads", end="")
+if marginal is not None:
+    print(f", {(wall - marginal * blocks + marginal * 10000) / 60:.0f} min at one more block's cost plus the start and end", end="")
+print()

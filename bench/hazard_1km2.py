@@ -64,14 +64,15 @@ def hazard(label, runs_per_cell, model, release):
     blocks = s["passes"]["forest"]["blocks"]
     print(f"{label:8s} {blocks:6d} blocks, {s['trees']} trees: wall {wall:7.1f} s, peak memory {peak:6.0f} MB, "
           f"{wall / blocks * 1e3:7.1f} ms per block; path p50 {s['passes']['forest']['path_length_m']['p50']:.0f} m", flush=True)
-    # The progress lines' times (whole seconds) between the first tenth and the last give the cost of one
-    # more block, without the start (DTM, forest, soil bed) and the end (rasters, figures) that a larger
-    # map pays once.
+    # The progress lines' times between the first printed (each tenth of the runs, after the first 5 s) and
+    # the last give the cost of one more block, without the start (DTM, forest, soil bed) and the end
+    # (rasters, figures) that a larger map pays once. The times are whole seconds: the resolution is printed.
     ticks = [(int(n), int(t)) for n, t in re.findall(r"runs (\d+)/\d+ \(\d+ %\), (\d+) s", r.stderr)]
     if len(ticks) >= 2 and ticks[-1][0] > ticks[0][0]:
         (n0, t0), (n1, t1) = ticks[0], ticks[-1]
         marginal = (t1 - t0) / (n1 - n0)
-        print(f"{'':8s} one more block {marginal * 1e3:.1f} ms (runs {n0} to {n1}); start and end {wall - marginal * blocks:.1f} s", flush=True)
+        print(f"{'':8s} one more block {marginal * 1e3:.1f} ms (+-{1e3 / (n1 - n0):.1f} ms, runs {n0} to {n1}); "
+              f"start and end {wall - marginal * blocks:.1f} s", flush=True)
         return wall, blocks, marginal
     return wall, blocks, None
 

@@ -94,7 +94,7 @@ StandPcf standPairCorrelation(const stand::Inventory& inv, const po::variables_m
 
 void writePcfCsv(const std::string& path, const stand::PairCorrelation& g) {
     std::ofstream out(path);
-    if (!out) throw InputError(path, 0, "cannot write the pair correlation file");
+    if (!out) throw sylva::cannotWrite(path);
     out << "r,g_trans,g_iso\n";
     for (std::size_t i = 0; i < g.r.size(); ++i)
         out << csvNumber(g.r[i]) << "," << csvNumber(g.trans[i]) << "," << csvNumber(g.iso[i]) << "\n";

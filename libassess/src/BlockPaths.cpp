@@ -144,7 +144,7 @@ GDALDatasetUniquePtr openOrCreateGeoPackage(const std::string& path) {
 // Written so: a title line (VTK reads 256 characters of it), ASCII, the dataset type.
 std::ofstream createVtk(const std::string& path, const std::string& title, const std::string& dataset) {
     std::ofstream out(path, std::ios::trunc);
-    if (!out) throw InputError(path, 0, "cannot write");
+    if (!out) throw sylva::cannotWrite(path);
     // 12 digits: 0.01 mm on Lambert-93's seven-digit eastings, where a float would round to 0.5 m.
     out.precision(12);
     out << "# vtk DataFile Version 3.0\n" << title.substr(0, 255) << "\nASCII\nDATASET " << dataset << '\n';
@@ -153,7 +153,7 @@ std::ofstream createVtk(const std::string& path, const std::string& title, const
 
 void closeVtk(std::ofstream& out, const std::string& path) {
     out.close();
-    if (!out) throw InputError(path, 0, "cannot write");
+    if (!out) throw sylva::cannotWrite(path);
 }
 
 std::string createDir(const std::string& dir) {

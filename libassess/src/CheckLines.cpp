@@ -159,13 +159,13 @@ std::string number(double v) {
 
 std::ofstream create(const std::string& path) {
     std::ofstream out(path, std::ios::trunc);
-    if (!out) throw InputError(path, 0, "cannot write");
+    if (!out) throw sylva::cannotWrite(path);
     return out;
 }
 
 void close(std::ofstream& out, const std::string& path) {
     out.flush();
-    if (!out) throw InputError(path, 0, "cannot write");
+    if (!out) throw sylva::cannotWrite(path);
 }
 
 }  // namespace

@@ -32,7 +32,7 @@ std::string shellQuoted(const std::string& text) {
 
 std::ofstream openData(const std::string& path) {
     std::ofstream out(path, std::ios::trunc);
-    if (!out) throw InputError(path, 0, "cannot write");
+    if (!out) throw sylva::cannotWrite(path);
     out.precision(10);
     return out;
 }

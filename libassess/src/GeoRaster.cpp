@@ -213,6 +213,7 @@ Dtm readDtm(const std::string& path) {
         for (int c = 0; c < g.columns; ++c) south[static_cast<std::size_t>(g.rows - 1 - r) * g.columns + c] = raster.values[g.index(c, r)];
     const Eigen::Vector2d sw = g.centre(0, g.rows - 1);
     d.elevation = dem::ElevationGrid::fromValues(g.columns, g.rows, sw.x(), sw.y(), t[1], std::move(south), path);
+    d.elevation.refuseUndeclaredNoData();
     return d;
 }
 

@@ -31,7 +31,7 @@ std::string setsText(const std::vector<std::string>& sets) {
 
 std::ofstream create(const std::string& path) {
     std::ofstream out(path, std::ios::trunc);
-    if (!out) throw InputError(path, 0, "cannot write");
+    if (!out) throw sylva::cannotWrite(path);
     out.precision(10);
     return out;
 }

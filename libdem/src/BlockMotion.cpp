@@ -99,7 +99,9 @@ BlockMotion::BlockMotion(const Scene& scene, const Release& start)
         os.precision(4);
         os << "the block is released inside the soil at " << where(start.position);
         if (height < 0) os << " (its centre " << -height << " m below the surface)";
-        throw cfg_.refusal({"release.fall_height_m"}, os.str() + ": raise release.fall_height_m");
+        // A block or a terrain changed on --set may have buried it under an unchanged fall height.
+        throw cfg_.refusal({"release.fall_height_m", "block.volume_m3", "block.d1_m", "terrain.profile", "terrain.dtm"},
+                           os.str() + ": raise release.fall_height_m");
     }
     refuseSoilTooSoft(scene);
     refuseStartInsideStem(scene);

@@ -69,7 +69,7 @@ CampaignSummary summarise(const std::vector<RunResult>& runs) {
 namespace {
 std::ofstream openOut(const std::string& path) {
     std::ofstream out(path);
-    if (!out) throw InputError(path, 0, "cannot write file");
+    if (!out) throw sylva::cannotWrite(path);
     return out;
 }
 }  // namespace

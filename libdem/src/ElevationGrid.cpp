@@ -40,7 +40,7 @@ const char* const kUndeclaredNoData =
     "-a_nodata for other formats)";
 
 std::string offEarth(double z) {
-    return "height " + readableNumber(z) + " m is beyond Earth's relief (-11 000 to 9 000 m): " + kUndeclaredNoData;
+    return "height " + readableNumber(z) + " m is beyond " + kEarthsRelief + ": " + kUndeclaredNoData;
 }
 
 std::string lower(std::string s) {
@@ -192,7 +192,7 @@ ElevationGrid ElevationGrid::readAsc(const std::string& path) {
     g.z_.reserve(static_cast<std::size_t>(g.ncols_) * g.nrows_);
     for (const auto& row : fileRows) g.z_.insert(g.z_.end(), row.begin(), row.end());
     g.complete_ = g.noDataCells() == 0;
-    g.refuseImpossibleFaces();
+    g.refuseUndeclaredNoData();
     return g;
 }
 
@@ -237,37 +237,27 @@ ElevationGrid ElevationGrid::fromValues(int columns, int rows, double x0, double
         throw InputError(g.source_, 0, g.cellPlace(static_cast<int>(i % columns), static_cast<int>(i / columns)) + ": " + offEarth(*off));
     }
     g.complete_ = g.noDataCells() == 0;
-    g.refuseImpossibleFaces();
     return g;
 }
 
-void ElevationGrid::refuseImpossibleFaces() const {
-    // Of two cells too far apart, the one farther from the grid's median height is the odd one (the
-    // median taken only then: a large DTM holds millions of cells).
-    const auto median = [this] {
-        std::vector<double> defined;
-        std::copy_if(z_.begin(), z_.end(), std::back_inserter(defined), [](double v) { return !std::isnan(v); });
-        const auto middle = defined.begin() + static_cast<std::ptrdiff_t>(defined.size() / 2);
-        std::nth_element(defined.begin(), middle, defined.end());
-        return *middle;
-    };
-    const double limit = kSteepestRise * cell_;
+void ElevationGrid::refuseUndeclaredNoData() const {
     for (int row = nrows_ - 1; row >= 0; --row)  // north first: the first error reported is the first in the file
         for (int col = 0; col < ncols_; ++col) {
             const double z = at(col, row);
             if (std::isnan(z)) continue;
             for (const auto& [c, r] : {std::pair<int, int>{col + 1, row}, std::pair<int, int>{col, row - 1}}) {
-                if (c >= ncols_ || r < 0 || std::isnan(at(c, r)) || std::abs(at(c, r) - z) <= limit) continue;
-                const double m = median();
-                const bool first = std::abs(z - m) >= std::abs(at(c, r) - m);
-                const int oddCol = first ? col : c, oddRow = first ? row : r;
-                const int nextCol = first ? c : col, nextRow = first ? r : row;
-                const double odd = at(oddCol, oddRow), next = at(nextCol, nextRow);
-                throw InputError(source_, rowLine_.empty() ? 0 : rowLine_[oddRow],
-                                 cellPlace(oddCol, oddRow) + ": height " + readableNumber(odd) + " m lies " +
-                                     readableNumber(std::round(std::abs(odd - next))) + " m " + (odd < next ? "below" : "above") +
-                                     " its neighbour's (" + readableNumber(std::round(next * 100) / 100) + " m) over a cell of " + readableNumber(cell_) +
-                                     " m, steeper than any terrain (89 degrees): " + kUndeclaredNoData);
+                if (c >= ncols_ || r < 0 || std::isnan(at(c, r)) || !impossibleStep(at(c, r) - z, cell_)) continue;
+                // The lower of the two: markers within Earth's relief are large negatives (positive
+                // ones, 9999 or 32767, lie beyond it), and in a DTM clipped to a catchment they may
+                // outnumber the ground.
+                const bool first = z < at(c, r);
+                const int lowCol = first ? col : c, lowRow = first ? row : r;
+                const double low = std::min(z, at(c, r)), high = std::max(z, at(c, r));
+                throw InputError(source_, rowLine_.empty() ? 0 : rowLine_[lowRow],
+                                 cellPlace(lowCol, lowRow) + ": height " + readableNumber(low) + " m lies " +
+                                     readableNumber(std::round(high - low)) + " m below its neighbour's (" +
+                                     readableNumber(std::round(high * 100) / 100) + " m) over a cell of " + readableNumber(cell_) +
+                                     " m, a step no terrain has (steeper than 89 degrees and higher than 2 000 m): " + kUndeclaredNoData);
             }
         }
 }

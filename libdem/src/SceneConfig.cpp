@@ -132,7 +132,7 @@ SceneKeys::SceneKeys(StemParameterSet set) : parameterSet(name(set)) {
     const Range modulus = closed(1e5, 1e13, "Pa", "MPa or GPa typed as Pa?");
     const Range ratio = aboveUpTo(0, 10, "");
     const Range friction = fromBelow(0, 90, "deg");
-    k.optionalOther("terrain.profile", t.profile, "slope profile CSV with columns x,z (m), x increasing and the slope falling along it (run-out is measured along +x), no segment steeper than 89 degrees (a NODATA value left in it), relative to the scene file");
+    k.optionalOther("terrain.profile", t.profile, "slope profile CSV with columns x,z (m), x increasing and the slope falling along it (run-out is measured along +x), no step both steeper than 89 degrees and higher than 2 000 m (a NODATA value left in it), relative to the scene file");
     k.optionalOther("terrain.dtm", t.dtm, "or a DTM as an ESRI ASCII grid (.asc)");
     k.optionalOther("forest.file", c.forestFile, "forest CSV (from sylvarock generate, or x,y,dbh_cm[,stool]); relative to the scene file");
     k.number("terrain.width_m", t.soil.width, aboveUpTo(0, 5000, "m", "", "the soil bed covers the whole width: a valley-wide strip would not fit in memory"), "extent across the slope of a profile terrain");
@@ -151,7 +151,7 @@ SceneKeys::SceneKeys(StemParameterSet set) : parameterSet(name(set)) {
     k.other("block.shape", shape, "cube | cuboid | sphere");
     k.number("block.volume_m3", b.volumeM3, aboveUpTo(0, 1000, "m^3", "", "litres typed as m^3? (above 1000 m^3 is a rock avalanche, not a rockfall)"), "volume of a cube or sphere block");
     const Range edge = aboveUpTo(0, 20, "m", "", "mm or cm typed as m?");
-    k.optionalNumber("block.d1_m", b.d1, edge, "cuboid edge 1; on a cube, its edge: the volume is then d1^3, whatever block.volume_m3 says");
+    k.optionalNumber("block.d1_m", b.d1, edge, "cuboid edge 1; on a cube, its edge: the volume is then d1^3 (a block.volume_m3 given beside it must agree, one in the file gives way to d1_m on --set)");
     k.optionalNumber("block.d2_m", b.d2, edge, "cuboid edge 2");
     k.optionalNumber("block.d3_m", b.d3, edge, "cuboid edge 3");
     k.number("block.density_kg_m3", b.densityKgM3, closed(500, 8000, "kg/m^3", "t/m^3 typed as kg/m^3?"), "(Table 2: 2700)");

@@ -73,15 +73,15 @@ SlopeProfile SlopeProfile::readCsv(const std::string& path) {
                "x = " + t.text(i, cx) + " does not increase (previous point, line " + std::to_string(t.lineOf(i - 1)) +
                    ", has x = " + t.text(i - 1, cx) + "); x must increase strictly");
     for (std::size_t i = 0; i < z.size(); ++i)
-        if (!onEarth(z[i]))
-            t.fail(i, cz, "z = " + t.text(i, cz) + " m is beyond Earth's relief (-11 000 to 9 000 m): a NODATA value? "
-                          "Remove the point");
+        if (!onEarth(z[i])) t.fail(i, cz, "z = " + t.text(i, cz) + " m is beyond " + kEarthsRelief + ": a NODATA value left in the profile? Remove the point");
     for (std::size_t i = 1; i < z.size(); ++i)
-        if (std::abs(z[i] - z[i - 1]) > kSteepestRise * (x[i] - x[i - 1]))
-            t.fail(i, cz,
-                   "z = " + t.text(i, cz) + " m at x = " + t.text(i, cx) + " m, after z = " + t.text(i - 1, cz) +
-                       " m at x = " + t.text(i - 1, cx) + " m (line " + std::to_string(t.lineOf(i - 1)) +
-                       "): steeper than any terrain (89 degrees); a NODATA value (-9999?) left in the profile? Remove it");
+        if (impossibleStep(z[i] - z[i - 1], x[i] - x[i - 1])) {
+            const std::size_t low = z[i] < z[i - 1] ? i : i - 1, other = low == i ? i - 1 : i;  // the marker is the lower
+            t.fail(low, cz,
+                   "z = " + t.text(low, cz) + " m at x = " + t.text(low, cx) + " m, beside z = " + t.text(other, cz) + " m at x = " +
+                       t.text(other, cx) + " m (line " + std::to_string(t.lineOf(other)) +
+                       "): a step no terrain has (steeper than 89 degrees and higher than 2 000 m); a NODATA value left in the profile? Remove the point");
+        }
     // Run-out is measured down the slope along +x: a profile climbing with x sends every block off its top edge.
     if (z.back() > z.front())
         t.fail(t.rows() - 1, cz,

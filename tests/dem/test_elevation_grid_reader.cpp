@@ -143,21 +143,35 @@ TEST(ElevationGridReader, AHeightBeyondEarthsReliefIsAnUndeclaredNodata) {
 
 // A hole filled with -9999, inside Earth's relief, that the file does not declare NODATA: read as
 // ground, it was a pit 10 km deep where every block of a hazard map stopped (paths of 344 km, no
-// warning). No terrain face is steeper than 89 degrees over a whole cell; the cell farther from the
-// grid's median height is named.
+// warning). No terrain has a step steeper than 89 degrees and higher than 2 000 m; the lower cell is
+// named, even where the markers outnumber the ground (a DTM clipped to a catchment).
 TEST(ElevationGridReader, AHoleOfUndeclaredNodataSteeperThanAnyTerrainIsRefused) {
     expectError("grid_undeclared_hole.asc", 7, "value 2: height -9999 m lies 10409 m below its neighbour's (410 m) over a cell of 2 m");
     // The same values from GDAL (row 0 the southernmost).
     std::vector<double> z = {409.5, 407.0, 404.5, 402.0, 411.0, -9999, 406.0, 403.5, 412.5, 410.0, 407.5, 405.0};
     try {
-        ElevationGrid::fromValues(4, 3, 1, 1, 2, z, "dtm.tif");
+        ElevationGrid::fromValues(4, 3, 1, 1, 2, z, "dtm.tif").refuseUndeclaredNoData();
         ADD_FAILURE() << "-9999 m beside 410 m was accepted";
     } catch (const InputError& e) {
         EXPECT_TRUE(contains(e.what(), "cell (column 2, row 2, counted from 1 at the north-west corner): height -9999 m")) << e.what();
     }
-    // A cliff as steep as a DTM holds one: 110 m over a 2 m cell (88.96 degrees).
+    // Real cliffs, however fine the cells: 110 m over 2 m, and 1 900 m (a face higher than any on
+    // Earth) over 2 m; 2 100 m over 2 m is refused.
     z[5] = 411.0 - 110;
-    EXPECT_NO_THROW(ElevationGrid::fromValues(4, 3, 1, 1, 2, z, "dtm.tif"));
+    EXPECT_NO_THROW(ElevationGrid::fromValues(4, 3, 1, 1, 2, z, "dtm.tif").refuseUndeclaredNoData());
+    z[5] = 411.0 - 1900;
+    EXPECT_NO_THROW(ElevationGrid::fromValues(4, 3, 1, 1, 2, z, "dtm.tif").refuseUndeclaredNoData());
+    z[5] = 411.0 - 2100;
+    EXPECT_THROW(ElevationGrid::fromValues(4, 3, 1, 1, 2, z, "dtm.tif").refuseUndeclaredNoData(), InputError);
+    // Mostly markers: the ground cell above them is not the one named.
+    std::vector<double> clipped(12, -9999);
+    clipped[10] = 380;  // north row, third column
+    try {
+        ElevationGrid::fromValues(4, 3, 1, 1, 2, clipped, "catchment.tif").refuseUndeclaredNoData();
+        ADD_FAILURE() << "-9999 beside 380 m was accepted";
+    } catch (const InputError& e) {
+        EXPECT_TRUE(contains(e.what(), "row 1, counted from 1 at the north-west corner): height -9999 m lies 10379 m below")) << e.what();
+    }
 }
 
 // grid_nodata.asc: 4 x 3 cells of 1 m, corner (0, 0); the NODATA cell is value 3 of line 8, the

@@ -82,10 +82,20 @@ TEST(SlopeProfileReader, AProfileRisingAlongXIsRefused) {
 TEST(SlopeProfileReader, ANodataValueLeftInTheProfileIsRefused) {
     InputError e = readError("profile_nodata_point.csv");
     EXPECT_EQ(e.line(), 4);
-    EXPECT_TRUE(contains(e.what(), "z = -9999 m at x = 300 m, after z = 300 m at x = 200 m (line 3): steeper than any terrain")) << e.what();
+    EXPECT_TRUE(contains(e.what(), "z = -9999 m at x = 300 m, beside z = 300 m at x = 200 m (line 3): a step no terrain has")) << e.what();
     e = readError("profile_off_earth.csv");
     EXPECT_EQ(e.line(), 3);
     EXPECT_TRUE(contains(e.what(), "z = 5e30 m is beyond Earth's relief")) << e.what();
+    // The marker as the first point is the one named, not the ground after it.
+    e = readError("profile_nodata_first.csv");
+    EXPECT_EQ(e.line(), 2);
+    EXPECT_TRUE(contains(e.what(), "z = -9999 m at x = 0 m, beside z = 400 m at x = 2 m (line 3)")) << e.what();
+}
+
+// A vertical cliff drawn with x barely increasing, as x must, is terrain.
+TEST(SlopeProfileReader, ACliffDrawnWithATinyStepInXIsRead) {
+    const SlopeProfile p = SlopeProfile::readCsv(kDir + "profile_cliff.csv");
+    EXPECT_DOUBLE_EQ(p.height(100.01), 250);
 }
 
 TEST(SlopeProfileReader, OnePointIsNotAProfile) {

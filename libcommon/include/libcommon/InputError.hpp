@@ -1,9 +1,6 @@
 #pragma once
 // An error in something a user gave us (a file, an option, a scene key). It names where the
 // problem is, so the CLI can print "FILE:LINE: what" and exit non-zero instead of crashing.
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -38,18 +35,9 @@ inline std::string readableNumber(double v) {
     return os.str();
 }
 
-// Why `path` could not be opened for writing, called right after the failed open: a folder given
-// for a file, a folder that does not exist, or the system's reason ("cannot open file for writing"
-// alone left the user to guess).
-inline InputError cannotWrite(const std::string& path) {
-    const int error = errno;
-    namespace fs = std::filesystem;
-    std::error_code ec;
-    if (fs::is_directory(path, ec)) return InputError(path, 0, "is a folder: give a file's name to write");
-    const fs::path folder = fs::path(path).parent_path();
-    if (!folder.empty() && !fs::is_directory(folder, ec))
-        return InputError(path, 0, "cannot write here: the folder " + folder.string() + (fs::exists(folder, ec) ? " is a file" : " does not exist"));
-    return InputError(path, 0, std::string("cannot open file for writing: ") + (error ? std::strerror(error) : "unknown reason"));
-}
+// Why `path` could not be opened for writing, called right after the failed open (it reads errno):
+// a folder given for a file, a folder that does not exist, or the system's reason ("cannot open file
+// for writing" alone left the user to guess).
+InputError cannotWrite(const std::string& path);
 
 }  // namespace sylva

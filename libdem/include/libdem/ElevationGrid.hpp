@@ -12,16 +12,15 @@ namespace sylva::dem {
 class ElevationGrid {
 public:
     // Errors (bad or missing header key, non-numeric value, a row with the wrong number of values,
-    // too few or too many rows, a height beyond Earth's relief or a neighbour steeper than 89 degrees
-    // away: an undeclared NODATA) name the file and the line. NODATA cells are accepted here and rejected only where a height is needed (see
+    // too few or too many rows, a height beyond Earth's relief or an impossible step from a neighbour:
+    // an undeclared NODATA, refuseUndeclaredNoData) name the file and the line. NODATA cells are accepted here and rejected only where a height is needed (see
     // requireDefined).
     static ElevationGrid readAsc(const std::string& path);
     // A grid read by someone else (e.g. GDAL): `z` row-major with row 0 the southernmost, NaN for
     // NODATA; (x0, y0) the centre of the south-west cell. Errors about a NODATA cell then name the
     // cell (column and row counted from 1 at the north-west corner) in `source`.
     // Throws std::invalid_argument on fewer than 2 x 2 cells, a size mismatch or a cell size <= 0;
-    // InputError naming the cell of a height beyond Earth's relief or steeper than 89 degrees from a
-    // neighbour (an undeclared NODATA).
+    // InputError naming the cell of a height beyond Earth's relief (an undeclared NODATA).
     static ElevationGrid fromValues(int columns, int rows, double x0, double y0, double cellSize, std::vector<double> z,
                                     std::string source);
 
@@ -36,6 +35,11 @@ public:
     // Throws InputError (file, line, cell) if a cell whose value enters the interpolation anywhere
     // in [x0, x1] x [y0, y1] is NODATA; std::invalid_argument if a bound is not finite.
     void requireDefined(double x0, double x1, double y0, double y1) const;
+
+    // Throws InputError naming the lower of two neighbouring cells whose step no terrain has
+    // (impossibleStep: an undeclared NODATA within Earth's relief beside real ground). For grids read
+    // from a user's file; a grid made here (micro-topography) is not the file's to blame.
+    void refuseUndeclaredNoData() const;
 
     long noDataCells() const;  // how many cells have no height
     double xmin() const { return x0_; }
@@ -58,7 +62,6 @@ private:
     [[noreturn]] void failNoData(int col, int row) const;
     // Where a cell is named in an error: its file line and value, or its column and row.
     std::string cellPlace(int col, int row) const;
-    void refuseImpossibleFaces() const;
 
     int ncols_ = 0, nrows_ = 0;
     double x0_ = 0, y0_ = 0, cell_ = 1;  // centre of the south-west cell

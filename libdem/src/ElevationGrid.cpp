@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
-#include <iterator>
 #include <limits>
 #include <map>
 #include <optional>
@@ -257,7 +256,7 @@ void ElevationGrid::refuseUndeclaredNoData() const {
                                  cellPlace(lowCol, lowRow) + ": height " + readableNumber(low) + " m lies " +
                                      readableNumber(std::round(high - low)) + " m below its neighbour's (" +
                                      readableNumber(std::round(high * 100) / 100) + " m) over a cell of " + readableNumber(cell_) +
-                                     " m, a step no terrain has (steeper than 89 degrees and higher than 2 000 m): " + kUndeclaredNoData);
+                                     " m, " + kImpossibleStep + ": " + kUndeclaredNoData);
             }
         }
 }

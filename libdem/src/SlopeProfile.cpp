@@ -80,7 +80,7 @@ SlopeProfile SlopeProfile::readCsv(const std::string& path) {
             t.fail(low, cz,
                    "z = " + t.text(low, cz) + " m at x = " + t.text(low, cx) + " m, beside z = " + t.text(other, cz) + " m at x = " +
                        t.text(other, cx) + " m (line " + std::to_string(t.lineOf(other)) +
-                       "): a step no terrain has (steeper than 89 degrees and higher than 2 000 m); a NODATA value left in the profile? Remove the point");
+                       "): " + kImpossibleStep + "; a NODATA value left in the profile? Remove the point");
         }
     // Run-out is measured down the slope along +x: a profile climbing with x sends every block off its top edge.
     if (z.back() > z.front())

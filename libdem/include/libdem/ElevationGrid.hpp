@@ -13,8 +13,8 @@ class ElevationGrid {
 public:
     // Errors (bad or missing header key, non-numeric value, a row with the wrong number of values,
     // too few or too many rows, a height beyond Earth's relief or an impossible step from a neighbour:
-    // an undeclared NODATA, refuseUndeclaredNoData) name the file and the line. NODATA cells are accepted here and rejected only where a height is needed (see
-    // requireDefined).
+    // an undeclared NODATA, refuseUndeclaredNoData) name the file and the line. NODATA cells are
+    // accepted here and rejected only where a height is needed (see requireDefined).
     static ElevationGrid readAsc(const std::string& path);
     // A grid read by someone else (e.g. GDAL): `z` row-major with row 0 the southernmost, NaN for
     // NODATA; (x0, y0) the centre of the south-west cell. Errors about a NODATA cell then name the

@@ -40,7 +40,7 @@ def run_one(exe, extra, dbh, speed, height, ecc, h, volume):
     return {"impacts": j["impacts"], "tree_j": tree, "before_j": j["kinetic_before_j"],
             "after_j": j["kinetic_after_j"], "broken": int(j["stem_broken"]), "bole_broken": int(below_crown),
             "break_m": "" if j["break_height_m"] is None else round(j["break_height_m"], 2),
-            "root_failed": int(j.get("root_failed", False))}
+            "root_failed": int(j.get("root_failed", False)), "breaks": j.get("stem_breaks", "")}
 
 
 def main():
@@ -79,7 +79,7 @@ def main():
         row = dict(zip(("dbh_cm", "speed_m_s", "height_m", "eccentricity"), c))
         row["block_m3"] = volume_of(c[2]) or "scene"
         for h, x in zip(spacings, r):
-            for k in ("tree_j", "after_j", "broken", "break_m", "bole_broken", "root_failed"):
+            for k in ("tree_j", "after_j", "broken", "break_m", "bole_broken", "root_failed", "breaks"):
                 row[f"{k}@{h:g}"] = x.get(k, "")
         row["before_j"] = r[0].get("before_j", "")
         rows.append(row)
@@ -125,10 +125,22 @@ def main():
         print(f"  broken at both: lowest break moved by median {shifts[len(shifts)//2]:.2f} m, "
               f"{within(shifts, 1.0)}/{len(shifts)} within 1 m; broken below the crown at one spacing only: "
               f"{sum(1 for r in rows if r.get('same_bole') == 0)}/{len(rows)}")
+    print_breaks(rows, spacings)
     for p in problems:
         print("  problem:", p)
     print_by_height(rows, spacings)
     plot(a.out, spacings, rows)
+
+
+def print_breaks(rows, spacings):
+    """How many pieces a broken stem ends in, spacing by spacing: Eq. 6's rupture is brittle, so a
+    whipped stem shatters into more pieces the finer its nodes (docs/model-stems.md, "A broken stem
+    shatters")."""
+    counts = {h: [r[f"breaks@{h:g}"] for r in rows if r.get(f"broken@{h:g}") == 1 and r.get(f"breaks@{h:g}") != ""]
+              for h in spacings}
+    if any(counts.values()):
+        print("  breaks of the broken stems, median (most): " +
+              ", ".join(f"{sorted(c)[len(c)//2]} ({max(c)}) at {h:g} m" for h, c in counts.items() if c))
 
 
 def print_by_height(rows, spacings):

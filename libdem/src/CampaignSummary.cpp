@@ -141,11 +141,13 @@ void writeImpactEnergyJson(const std::string& path, const RunResult& r) {
         j["root_yielded"] = i.rootYielded;
         j["root_failed"] = i.rootFailed;
         j["break_height_m"] = i.breakHeight;  // null: not broken
+        j["stem_breaks"] = i.stemBreaks;
         j["stem_height_m"] = i.stemHeight;
     } else {
         j["stem_broken"] = false;
         j["root_yielded"] = false;
         j["root_failed"] = false;
+        j["stem_breaks"] = 0;
     }
     j["dissipated_j"] = {{"bending_plasticity", f.bendingPlasticity}, {"bending_damping", f.bendingDamping},
                          {"axial_damping", f.axialDamping},           {"root_plasticity", f.rootPlasticity},       {"rupture", f.rupture},

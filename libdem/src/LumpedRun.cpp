@@ -179,6 +179,7 @@ RunResult simulateLumped(const Scene& scene, int run, std::uint64_t seed, const 
             rec.speedAfter = v.norm();
             rec.energyAfter = 0.5 * mass * v.squaredNorm();
             rec.stemBroken = out.treeBroken;
+            rec.stemBreaks = out.treeBroken ? 1 : 0;  // the lumped tree has no pieces: broken is one break
             r.impacts.push_back(rec);
             if (rec.speedAfter < lp.stopSpeed) {
                 r.reason = StopReason::Rest;

@@ -311,7 +311,9 @@ TEST(SimulateCli, ALaunchThatMissesTheTreeIsSaid) {
     EXPECT_NE(r.output.find("warning: the block passed the tree without touching it (block.impact_height_m 20 m on a stem 13.9 m tall"),
               std::string::npos)
         << r.output;
-    EXPECT_NE(slurp((out / "energy.json").string()).find("\"impacts\": 0"), std::string::npos);
+    const std::string energy = slurp((out / "energy.json").string());
+    EXPECT_NE(energy.find("\"impacts\": 0"), std::string::npos);
+    EXPECT_NE(energy.find("\"stem_breaks\": 0"), std::string::npos) << energy;
 }
 
 // Validation (short form; SYLVAROCK_LONG_VALIDATION=1 runs 300 blocks): without forest, the stand-in

@@ -137,11 +137,13 @@ TEST(TreeImpact, StemBreaksOnlyWhenTheBlockCarriesEnoughEnergy) {
     ASSERT_EQ(below.impacts.size(), 1u);
     EXPECT_FALSE(below.impacts[0].stemBroken) << "bound " << needed << " J";
     EXPECT_TRUE(std::isnan(below.impacts[0].breakHeight)) << "no break, no break height";
+    EXPECT_EQ(below.impacts[0].stemBreaks, 0u);
     std::printf("energy to break a 25 cm stem hit at 0.55 m, elastic bound: %.0f J\n", needed);
     // Twenty times the bound: far beyond what the stem stores before rupture.
     const RunResult above = launch(with(speedFor(20 * needed)));
     ASSERT_EQ(above.impacts.size(), 1u);
     EXPECT_TRUE(above.impacts[0].stemBroken) << "bound " << needed << " J";
+    EXPECT_GE(above.impacts[0].stemBreaks, 1u);  // energy.json stem_breaks: the pieces less one
     // Where it broke is recorded, on the stem (a connection's middle, so strictly inside it).
     EXPECT_GT(above.impacts[0].breakHeight, 0.0);
     EXPECT_LT(above.impacts[0].breakHeight, above.impacts[0].stemHeight);

@@ -9,7 +9,7 @@ The tree's energy is that of the impact (energy.json impact_dissipated_j: bendin
 bending damping, root plasticity, rupture from first contact to the block leaving), so broken pieces
 are not followed to rest (forest.piece_max_time_s = 0): what they do later is not the impact's.
 """
-import argparse, concurrent.futures, csv, itertools, json, os, subprocess, sys, tempfile, time
+import argparse, concurrent.futures, csv, itertools, json, os, statistics, subprocess, sys, tempfile, time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TREE_TERMS = ("bending_plasticity", "bending_damping", "axial_damping", "root_plasticity", "rupture")
@@ -133,14 +133,15 @@ def main():
 
 
 def print_breaks(rows, spacings):
-    """How many pieces a broken stem ends in, spacing by spacing: Eq. 6's rupture is brittle, so a
+    """How many connections a broken stem lost, spacing by spacing: Eq. 6's rupture is brittle, so a
     whipped stem shatters into more pieces the finer its nodes (docs/model-stems.md, "A broken stem
-    shatters")."""
+    shatters"). Those of the impact only: with forest.piece_max_time_s = 0 the stem sleeps before its
+    pieces land and break again."""
     counts = {h: [r[f"breaks@{h:g}"] for r in rows if r.get(f"broken@{h:g}") == 1 and r.get(f"breaks@{h:g}") != ""]
               for h in spacings}
-    if any(counts.values()):
-        print("  breaks of the broken stems, median (most): " +
-              ", ".join(f"{sorted(c)[len(c)//2]} ({max(c)}) at {h:g} m" for h, c in counts.items() if c))
+    print("  breaks of the broken stems, median (most): " +
+          ", ".join(f"{statistics.median(c):g} ({max(c)}) at {h:g} m" if c else f"none broken at {h:g} m"
+                    for h, c in counts.items()))
 
 
 def print_by_height(rows, spacings):

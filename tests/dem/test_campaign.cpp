@@ -316,6 +316,25 @@ TEST(SimulateCli, ALaunchThatMissesTheTreeIsSaid) {
     EXPECT_NE(energy.find("\"stem_breaks\": 0"), std::string::npos) << energy;
 }
 
+// A stem the block breaks: energy.json counts the connections it lost, at least the one that broke
+// and at most all of them (a 15 cm beech, Eq. 11's 11.1 m, is 23 connections at 0.5 m).
+TEST(SimulateCli, TheEnergyFileCountsTheConnectionsABrokenStemLost) {
+    const auto out = std::filesystem::temp_directory_path() / "sylvarock-tests" / "single-tree-breaks";
+    std::filesystem::remove_all(out);
+    const auto r = sylva::testing::runCli(std::string("simulate --scene ") + SYLVAROCK_DATA +
+                                          "/scenes/single-tree.ini --set tree.dbh_cm=15 --set block.speed_m_s=10 "
+                                          "--set stem.node_spacing_m=0.5 --no-figures --out " + out.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    const std::string energy = slurp((out / "energy.json").string());
+    EXPECT_NE(energy.find("\"stem_broken\": true"), std::string::npos) << energy;
+    const std::string key = "\"stem_breaks\": ";
+    const auto at = energy.find(key);
+    ASSERT_NE(at, std::string::npos) << energy;
+    const int breaks = std::stoi(energy.substr(at + key.size()));
+    EXPECT_GE(breaks, 1);
+    EXPECT_LE(breaks, 23);
+}
+
 // Validation (short form; SYLVAROCK_LONG_VALIDATION=1 runs 300 blocks): without forest, the stand-in
 // slope and Table 2 give the paper's Sect. 3.2: most blocks stop between 325 and 375 m along the
 // slope, energy lines between 25 and 32 deg, bounces mostly under 1 m, speeds of 10-15 m/s.

@@ -169,6 +169,7 @@ TEST(LumpedRun, ABlockReleasedWithinReachOfAStemHitsIt) {
     EXPECT_LT(r.impacts[0].energyAfter, r.impacts[0].energyBefore);
     EXPECT_DOUBLE_EQ(r.impacts[0].stemHeight, 20);  // impacts.csv stem_height_m (it was 0 for every lumped impact)
     EXPECT_TRUE(std::isnan(r.impacts[0].breakHeight));  // the lumped model does not place a break
+    EXPECT_EQ(r.impacts[0].stemBreaks, r.impacts[0].stemBroken ? 1u : 0u);  // and has no pieces
 }
 
 TEST(LumpedRun, ResultsDoNotDependOnTheNumberOfThreads) {

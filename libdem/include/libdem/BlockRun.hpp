@@ -51,7 +51,9 @@ struct TreeImpact {
     bool stemBroken = false, rootYielded = false, rootFailed = false;
     double breakHeight = std::nan("");  // m above the foot, of the lowest break (NaN: not broken)
     double stemHeight = 0;              // H_T, m: with breakHeight, tells a snapped top from a broken bole
-    // Connections broken, the stem's pieces less one: a brittle rupture (Eq. 6) shatters a whipped
+    // Connections of the stem broken when its impact was closed (the stem put to sleep, or the run's
+    // end), whatever broke them: an earlier impact on it, a fold past pi / 2, its pieces landing (not
+    // if forest.piece_max_time_s let it sleep before). A brittle rupture (Eq. 6) shatters a whipped
     // stem into more pieces the finer its nodes (docs/model-stems.md, "A broken stem shatters").
     std::size_t stemBreaks = 0;
     // What the tree's own terms took from the first contact to the block leaving it (not what its

@@ -135,8 +135,8 @@ def main():
 def print_breaks(rows, spacings):
     """How many connections a broken stem lost, spacing by spacing: Eq. 6's rupture is brittle, so a
     whipped stem shatters into more pieces the finer its nodes (docs/model-stems.md, "A broken stem
-    shatters"). Those of the impact only: with forest.piece_max_time_s = 0 the stem sleeps before its
-    pieces land and break again."""
+    shatters"). With forest.piece_max_time_s = 0 a stem the block has left may sleep before its pieces
+    land and break again: then they are fewer than a whole run's."""
     counts = {h: [r[f"breaks@{h:g}"] for r in rows if r.get(f"broken@{h:g}") == 1 and r.get(f"breaks@{h:g}") != ""]
               for h in spacings}
     print("  breaks of the broken stems, median (most): " +

@@ -33,7 +33,7 @@ const ConnectionBeam::Rule kRules[] = {
 ConnectionBeam::ConnectionBeam(const BendingParams& p, double diameterA, double diameterB, double shearStiffness,
                                double length, int sections)
     : k_(bendingCoefficients(p, 0.5 * (diameterA + diameterB), length)), shearStiffness_(shearStiffness),
-      length_(length), rule_(nullptr), reading_(p.reading) {
+      length_(length), rule_(nullptr), reading_(p.reading), brittle_(p.fractureEnergy == 0) {
     for (const Rule& r : kRules)
         if (r.count == sections) rule_ = &r;
     if (!rule_) throw std::invalid_argument("ConnectionBeam: " + std::to_string(sections) + " sections (1, 3 or 5)");
@@ -197,8 +197,15 @@ HingeWork ConnectionBeam::deformChannel(Channel& ch, const Moment& theta, const 
         const double h = hardening_[i], rupture = sectionK_[i].ruptureMoment;
         double flow = lambda[i];
         if (s.yieldMoment + h * flow >= rupture) {  // Eq. 6: the section breaks
-            flow = h > 0 ? (rupture - s.yieldMoment) / h : flow;
-            broken_ = true;
+            ruptureReached_ = true;
+            if (brittle_) {
+                flow = h > 0 ? (rupture - s.yieldMoment) / h : flow;
+                broken_ = true;
+            } else {
+                // It flows on at M_Rupt while its owner softens what it transmits: no hardening past
+                // rupture, so that the fracture's work is M_Rupt theta_f / 2 whatever the length.
+                hardening_[i] = 0;
+            }
         }
         // Along the plastic branch the section's moment is its growing yield moment: exact work.
         w.dissipated += r.weight[i] * flow * (s.yieldMoment + 0.5 * h * flow);

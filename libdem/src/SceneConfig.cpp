@@ -197,6 +197,7 @@ SceneKeys::SceneKeys(StemParameterSet set) : parameterSet(name(set)) {
     k.number("stem.tau_s", bend.tau, closed(0, 1, "s", "", "ms typed as s?"), "tau (Eqs. 7-8), for stem.damping = viscous");
     k.other("stem.damping", damping, "viscous (the paper's Eqs. 7-8) | constant_loss (wood's loss factor, independent of frequency; docs/model-stems.md)");
     k.number("stem.loss_factor", bend.lossFactor, closed(0, 0.5, "", "", "percent typed as a fraction?"), "eta = tan(delta) of green wood, for stem.damping = constant_loss");
+    k.number("stem.fracture_energy_j_m2", bend.fractureEnergy, closed(0, 1e6, "J/m^2", "", "a strength in Pa typed for an energy in J/m^2?"), "G_f: what a connection pays, per m^2 of its section, to break once M_Rupt is reached, over a softening of its hinge (wood across the grain: of order 1e4); 0 (the default): Eq. 6's brittle rupture, under which a whipped stem breaks into more pieces the finer its nodes (docs/model-stems.md, \"A fracture energy\")");
     k.other("stem.bending_reading", reading, "isotropic (moment vector) | per_axis (the paper's x and y laws)");
     k.number("stem.root_stiffness_nm_rad", stem.root.stiffness, aboveUpTo(0, 1e12, "N m/rad"), "K_Root (Eqs. 9-10)");
     k.number("stem.root_yield_moment_nm", stem.root.yieldMoment, aboveUpTo(0, 1e9, "N m", "", "N mm typed as N m?"), "M_a, for stem.anchorage = fixed");

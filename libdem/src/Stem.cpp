@@ -119,6 +119,8 @@ Stem::Stem(const StemGeometry& g, const StemParams& p, const Vec3& foot, StemFoo
         const BendingDamping damping(p.bending, beam.coefficients());
         connections_.push_back(Connection{l, dCon, p.bending.moe * area / l / p.axialSoftening, shearModulus * polar / l,
                                           std::move(beam), damping});
+        if (p.bending.fractureEnergy > 0)
+            connections_.back().fracture = ConnectionFracture(p.bending.fractureEnergy, p.bending.sigmaRupt, dCon);
     }
 
     if (p.root.anchorage == RootAnchorage::StemWeight) {
@@ -195,16 +197,19 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
 
         const HingeWork w = theta.squaredNorm() > kFoldedConnection * kFoldedConnection ? k.bending.snap()
                                                              : k.bending.deform(theta.head<2>(), stretch.head<2>());
-        ledger.bendingPlasticity += w.dissipated;
-        ledger.unloadingGain += w.created;
+        // Once a connection with a fracture energy has reached M_Rupt it transmits (1 - d) of what its
+        // intact bending and shear would (ConnectionFracture); its hinge's flow at M_Rupt is then the
+        // fracture's work. Without one, d stays 0 and the products below are exact.
+        const double kept = k.fracture.carried();
+        (k.fracture.started() ? ledger.rupture : ledger.bendingPlasticity) += kept * w.dissipated;
+        ledger.unloadingGain += kept * w.created;
         const double linear = 0.5 * (k.axial * stretch.z() * stretch.z() + k.twist * theta.z() * theta.z());
         if (k.bending.broken()) {
-            // M_Rupt reached: resistance lost along all axes
-            ledger.rupture += w.released + linear + k.damping.release();
+            // M_Rupt reached (Eq. 6, brittle) or folded: resistance lost along all axes
+            ledger.rupture += kept * w.released + linear + kept * k.damping.release();
             ++breaks_;
             continue;
         }
-        stored += linear + k.bending.storedEnergy();
 
         // theta moves at J^-1 R_a^T (omega_b - omega_a), J^-1 = inverseLeftJacobian(theta); the moment M
         // conjugate to theta acts on a as R_a J^-T M and on b as the opposite, so its power is exactly
@@ -214,12 +219,27 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         const RotationJacobian toTheta = midpointInverseJacobian(theta);
         const Vec3 rate = toTheta * (frame.transpose() * (angularVelocity[b] - angularVelocity[a]));
         const BendingDamping::Step damped = k.damping.advance(rate.head<2>(), decay);
-        ledger.bendingDamping += damped.dissipated;
-        stored += k.damping.storedEnergy();
+        ledger.bendingDamping += kept * damped.dissipated;
+        if (k.bending.ruptureReached()) {
+            const double intact = k.bending.storedEnergy() + k.damping.storedEnergy();  // psi0
+            ledger.rupture += k.fracture.advance(theta.head<2>().norm(), stretch.head<2>(), intact);
+            if (k.fracture.through()) {  // what the bending stored has gone with the damage
+                k.bending.snap();
+                k.damping.release();
+                ledger.rupture += linear;
+                ++breaks_;
+                continue;
+            }
+            stored += k.fracture.carried() * intact + linear;
+        } else {
+            stored += linear + k.bending.storedEnergy();
+            stored += k.damping.storedEnergy();
+        }
+        const double carried = k.fracture.carried();
         const Vec2& damping = damped.moment;
 
         const Vec2& mb = k.bending.moment();
-        const Vec3 moment(mb.x() + damping.x(), mb.y() + damping.y(), k.twist * theta.z());
+        const Vec3 moment(carried * (mb.x() + damping.x()), carried * (mb.y() + damping.y()), k.twist * theta.z());
         // The axial and shear springs pull the nodes apart along the chord (f on a, -f on b) and,
         // through their frame halfway between a and b, turn it: chord x f in all, shared by the nodes as
         // the frame follows them (exactly half each for small theta). Node b's share is
@@ -229,7 +249,7 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         const Vec2 shear = k.bending.shearForce();
         // Wood's internal friction in the axial spring: a dashpot along it, at the nodes' mid-step velocities.
         k.dashpotForce = k.axialDamping * (velocity[b] - velocity[a]).dot(frame.col(2));
-        const Vec3 springs(shear.x(), shear.y(), k.axial * stretch.z() + k.dashpotForce);
+        const Vec3 springs(carried * shear.x(), carried * shear.y(), k.axial * stretch.z() + k.dashpotForce);
         const Vec3 turn = chord.cross(springs);
         const Vec3 couple =
             frame * toTheta.transposeTimes(moment - 0.5 * rightJacobian(0.5 * theta).transposeTimes(turn));

@@ -23,6 +23,7 @@ void validate(const StemParams& p) {
     require(std::isfinite(b.sigmaRupt) && b.sigmaRupt > b.sigmaElast, "sigma_Rupt (Pa)", b.sigmaRupt, "> sigma_Elast");
     require(b.sections == 1 || b.sections == 3 || b.sections == 5, "sections per connection", b.sections, "1, 3 or 5");
     require(std::isfinite(b.tau) && b.tau >= 0, "tau (s)", b.tau, ">= 0");
+    require(std::isfinite(b.fractureEnergy) && b.fractureEnergy >= 0, "fracture energy G_f (J/m^2)", b.fractureEnergy, ">= 0");
     require(std::isfinite(b.lossFactor) && b.lossFactor >= 0 && b.lossFactor <= 0.5, "loss factor eta", b.lossFactor, "in [0, 0.5]");
     require(std::isfinite(p.root.stiffness) && p.root.stiffness > 0, "K_Root (N m/rad)", p.root.stiffness, "> 0");
     require(p.root.yieldMoment > 0, "M_a (N m)", p.root.yieldMoment, "> 0");

@@ -335,6 +335,22 @@ TEST(SimulateCli, TheEnergyFileCountsTheConnectionsABrokenStemLost) {
     EXPECT_LE(breaks, 23);
 }
 
+// With a fracture energy, the impact that stopped on the energy audit at t = 1.04 s when a
+// half-broken connection let its node slide 2.2 m sideways (docs/model-stems.md, "A fracture
+// energy"): it now runs to its end, and the stem still breaks.
+TEST(SimulateCli, AStemWithAFractureEnergyBreaksWithinTheEnergyAudit) {
+    const auto out = std::filesystem::temp_directory_path() / "sylvarock-tests" / "single-tree-fracture";
+    std::filesystem::remove_all(out);
+    const auto r = sylva::testing::runCli(std::string("simulate --scene ") + SYLVAROCK_DATA +
+                                          "/scenes/single-tree.ini --set tree.dbh_cm=20 --set block.speed_m_s=10 "
+                                          "--set block.impact_height_m=1 --set block.eccentricity=0 "
+                                          "--set stem.node_spacing_m=0.5 --set stem.fracture_energy_j_m2=5e4 "
+                                          "--no-figures --out " + out.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    const std::string energy = slurp((out / "energy.json").string());
+    EXPECT_NE(energy.find("\"stem_broken\": true"), std::string::npos) << energy;
+}
+
 // Validation (short form; SYLVAROCK_LONG_VALIDATION=1 runs 300 blocks): without forest, the stand-in
 // slope and Table 2 give the paper's Sect. 3.2: most blocks stop between 325 and 375 m along the
 // slope, energy lines between 25 and 32 deg, bounces mostly under 1 m, speeds of 10-15 m/s.

@@ -42,6 +42,10 @@ public:
     // Transverse force the connection exerts on node a (node b takes the opposite), connection frame, N.
     Vec2 shearForce() const;
     bool broken() const { return broken_; }
+    // A section has reached M_Rupt. With a fracture energy (BendingParams::fractureEnergy) the beam
+    // goes on as if intact and its owner softens what it transmits (Stem::updateConnections); without
+    // one (Eq. 6) the connection is broken at once.
+    bool ruptureReached() const { return ruptureReached_; }
     double storedEnergy() const { return stored_; }  // bending and shear, recoverable elastically, J
     const HingeCoefficients& coefficients() const { return k_; }  // of the whole connection at D_con
     double shearStiffness() const { return shearStiffness_; }
@@ -90,6 +94,8 @@ private:
     std::array<Channel, 2> channels_;
     Vec2 moment_ = Vec2::Zero(), change_ = Vec2::Zero();
     double stored_ = 0;
+    bool brittle_ = true;  // no fracture energy: Eq. 6
+    bool ruptureReached_ = false;
     bool broken_ = false;
 };
 

@@ -8,7 +8,8 @@
 // connections, as the paper spreads it). Between neighbouring nodes a connection of length l
 // and mean diameter D_con carries linear elastic axial and twist springs (MOE and
 // G = MOE / (2 (1 + nu)); the axial one damped by wood's loss factor) and, for bending and shear, a ConnectionBeam (the trilinear law of Fig. 3
-// on its sections). The foot is clamped (coppice stems) or held
+// on its sections), which once M_Rupt is reached breaks at once (Eq. 6) or softens over a
+// ConnectionFracture. The foot is clamped (coppice stems) or held
 // in place and turning on the root spring (single trees). A broken connection transmits nothing:
 // the part above keeps moving as a free chain.
 // Node state is kept as arrays over nodes so that a step is a few loops over contiguous memory.
@@ -16,6 +17,7 @@
 
 #include "libdem/BendingDamping.hpp"
 #include "libdem/ConnectionBeam.hpp"
+#include "libdem/ConnectionFracture.hpp"
 #include "libdem/RigidBody.hpp"
 #include "libdem/RootSpring.hpp"
 #include "libdem/StableStep.hpp"
@@ -111,6 +113,7 @@ private:
         double axialDamping = 0;  // N s/m: wood's loss factor in the axial spring (constant_loss only)
         double dashpotForce = 0, dashpotStretch = 0;  // N, m: its force at the last step, and the axial stretch then
         double weightCompression = 0;  // m: how much the weight above shortens the axial spring (carryOwnWeight)
+        ConnectionFracture fracture{};  // once M_Rupt is reached, with a fracture energy
     };
     StemGeometry geometry_;
     StemParams params_;

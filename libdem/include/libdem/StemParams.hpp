@@ -26,6 +26,11 @@ struct BendingParams {
     double tau = 5e-4;           // tau, s (Eqs. 7-8), for StemDamping::Viscous
     StemDamping damping = StemDamping::Viscous;
     double lossFactor = 0.02;    // eta = tan(delta) of green wood, for StemDamping::ConstantLoss
+    // G_f, J per m^2 of the section broken: what a connection pays to break once M_Rupt is reached,
+    // over a softening of its hinge (ConnectionFracture; docs/model-stems.md, "A fracture energy").
+    // 0 is Eq. 6 as the paper has it, a brittle rupture that transmits nothing from the step M_Rupt
+    // is reached.
+    double fractureEnergy = 0;
     // Sections along each connection where Fig. 3 is applied (ConnectionBeam): 1 is the paper's
     // hinge at the connection's middle; 3 and 5 follow the moment's change along the connection.
     int sections = 1;

@@ -57,6 +57,7 @@ StemCount writeStemsCsv(const std::string& path, const dem::Scene& scene) {
 // block leaves the soil bed's extent).
 void writeRelease(const std::string& path, const dem::Scene& scene, const dem::Release& release) {
     std::ofstream rel(path);
+    if (!rel) throw cannotWrite(path);
     const dem::RigidBody& block = scene.blockTemplate();
     const auto& q = release.orientation;
     const dem::Vec3& p = release.position;
@@ -76,9 +77,19 @@ void writeSoilContact(const std::string& path, const dem::Scene& scene) {
     const dem::SoilContactParams& p = scene.config().soilContact;
     const dem::SoilContact law(p, scene.blockTemplate().mass());  // the block/soil law simulate builds (Scene)
     std::ofstream out(path);
+    if (!out) throw cannotWrite(path);
     out << std::setprecision(12) << "kn_n_m,kt_n_m,damping_n_s,friction_deg,normal_force_floored,gravity_m_s2\n"
         << p.kn << ',' << law.tangentialStiffness() << ',' << law.dampingCoefficient() << ',' << p.frictionDeg << ','
         << (p.dashpotPulls ? 0 : 1) << ',' << scene.config().gravity << '\n';
+    if (!out) throw InputError(path, 0, "write failed (disk full?)");
+}
+
+// The block's spheres in its body frame.
+void writeBlockSpheres(const std::string& path, const dem::RigidBody& block) {
+    std::ofstream out(path);
+    if (!out) throw cannotWrite(path);
+    out << "x,y,z,r\n";
+    for (const auto& s : block.spheres()) out << s.offset.x() << ',' << s.offset.y() << ',' << s.offset.z() << ',' << s.radius << '\n';
     if (!out) throw InputError(path, 0, "write failed (disk full?)");
 }
 
@@ -130,10 +141,7 @@ int runScene(int argc, const char* const* argv) {
     const dem::BlockMotion start(scene, release);
     std::filesystem::create_directories(out);
     scene.soil().writeCsv(out + "/soil_spheres.csv");
-    std::ofstream block(out + "/block_spheres.csv");
-    block << "x,y,z,r\n";
-    for (const auto& s : scene.blockTemplate().spheres())
-        block << s.offset.x() << ',' << s.offset.y() << ',' << s.offset.z() << ',' << s.radius << '\n';
+    writeBlockSpheres(out + "/block_spheres.csv", scene.blockTemplate());
     writeRelease(out + "/release.csv", scene, release);
     writeSoilContact(out + "/soil_contact.csv", scene);
     const StemCount stems = writeStemsCsv(out + "/stems.csv", scene);

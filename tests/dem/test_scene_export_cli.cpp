@@ -161,6 +161,19 @@ TEST(SceneExportCli, ImpossibleRunsActionsAndOutputsAreRefused) {
     EXPECT_FALSE(std::filesystem::exists(exportDir() / "refused"));
 }
 
+// A file that cannot be written is named: the block's spheres went unwritten without a word, and the
+// release and the soil law said "disk full?" of a file that never opened.
+TEST(SceneExportCli, AnOutputThatCannotBeWrittenIsNamed) {
+    for (const std::string name : {"soil_spheres.csv", "block_spheres.csv", "release.csv", "soil_contact.csv", "stems.csv"}) {
+        const auto out = exportDir() / ("blocked-" + name);
+        std::filesystem::remove_all(out);
+        std::filesystem::create_directories(out / name);  // a folder where the file should go
+        const CliRun r = sceneExport("--scene " + slopeScene() + " --out " + out.string());
+        EXPECT_EQ(r.status, 2) << name << ": " << r.output;
+        EXPECT_NE(r.output.find((out / name).string() + ": is a folder"), std::string::npos) << name << ": " << r.output;
+    }
+}
+
 // What another DEM code needs to rerun simulate's run i (the Yade cross-check, bench/yade): run i's
 // release, the solid's mass and inertia, the domain the run ends on leaving, and the block/soil law.
 TEST(SceneExportCli, WritesTheReleaseOfTheRunAskedAndTheBlockSoilLaw) {

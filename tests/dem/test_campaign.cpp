@@ -249,6 +249,18 @@ TEST(SimulateCli, OptionsHoldingBoostPlaceholdersAreRefused) {
     EXPECT_EQ(WEXITSTATUS(cli("simulate '--%canonical_option%' 1 --out " + out)), 2);
 }
 
+// A whole number too large for a count was "is invalid" and nothing more, as if it were mistyped.
+TEST(SimulateCli, ANumberOutOfAnOptionsRangeIsSaidToBe) {
+    const std::string out = (std::filesystem::temp_directory_path() / "sylvarock-tests" / "simulate-range").string();
+    const auto large = sylva::testing::runCli("simulate --runs 99999999999999 --out " + out);
+    EXPECT_EQ(large.status, 2);
+    EXPECT_NE(large.output.find("'--runs' is invalid: out of the range this option takes"), std::string::npos) << large.output;
+    const auto typo = sylva::testing::runCli("simulate --runs 12x --out " + out);
+    EXPECT_EQ(typo.status, 2);
+    EXPECT_NE(typo.output.find("'--runs' is invalid"), std::string::npos) << typo.output;
+    EXPECT_EQ(typo.output.find("out of the range"), std::string::npos) << typo.output;
+}
+
 // A run that goes numerically wrong is kept as failed, with its message, and left out of the
 // statistics; the other runs of the campaign still run. Forcing a step 20 times the soil contacts'
 // limit makes every run fail at its first landing.

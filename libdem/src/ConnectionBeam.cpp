@@ -33,7 +33,7 @@ const ConnectionBeam::Rule kRules[] = {
 ConnectionBeam::ConnectionBeam(const BendingParams& p, double diameterA, double diameterB, double shearStiffness,
                                double length, int sections)
     : k_(bendingCoefficients(p, 0.5 * (diameterA + diameterB), length)), shearStiffness_(shearStiffness),
-      length_(length), rule_(nullptr), reading_(p.reading), brittle_(p.fractureEnergy == 0) {
+      length_(length), rule_(nullptr), reading_(p.reading), brittle_(!(p.fractureEnergy > 0)) {
     for (const Rule& r : kRules)
         if (r.count == sections) rule_ = &r;
     if (!rule_) throw std::invalid_argument("ConnectionBeam: " + std::to_string(sections) + " sections (1, 3 or 5)");
@@ -196,7 +196,7 @@ HingeWork ConnectionBeam::deformChannel(Channel& ch, const Moment& theta, const 
         Section& s = ch.section[i];
         const double h = hardening_[i], rupture = sectionK_[i].ruptureMoment;
         double flow = lambda[i];
-        if (s.yieldMoment + h * flow >= rupture) {  // Eq. 6: the section breaks
+        if (s.yieldMoment + h * flow >= rupture) {  // Eq. 6: the section breaks, at once if brittle
             ruptureReached_ = true;
             if (brittle_) {
                 flow = h > 0 ? (rupture - s.yieldMoment) / h : flow;

@@ -222,8 +222,9 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         ledger.bendingDamping += kept * damped.dissipated;
         if (k.bending.ruptureReached()) {
             const double intact = k.bending.storedEnergy() + k.damping.storedEnergy();  // psi0
-            ledger.rupture += k.fracture.advance(theta.head<2>().norm(), stretch.head<2>(), intact);
-            if (k.fracture.through()) {  // what the bending stored has gone with the damage
+            ledger.rupture += k.fracture.advance(w.dissipated, stretch.head<2>(), intact);
+            if (k.fracture.through()) {
+                // advance has released what the bending and its damping stored: their returns are not booked again
                 k.bending.snap();
                 k.damping.release();
                 ledger.rupture += linear;
@@ -232,10 +233,11 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
             }
             stored += k.fracture.carried() * intact + linear;
         } else {
+            // Two sums, in this order: merged, they move the last bits of the runs without a fracture energy.
             stored += linear + k.bending.storedEnergy();
             stored += k.damping.storedEnergy();
         }
-        const double carried = k.fracture.carried();
+        const double carried = k.fracture.carried();  // after this step's damage, as the forces below are
         const Vec2& damping = damped.moment;
 
         const Vec2& mb = k.bending.moment();

@@ -160,6 +160,23 @@ TEST(SceneConfigParser, StemParameterSetsAreNamed) {
     EXPECT_THROW(sceneFromOverrides({"stem.root_failure_rotation_deg=-5"}), sylva::InputError);
 }
 
+// The fracture energy is an option: none in either set, and a value typed in the wrong unit (sigma_Rupt's
+// Pa) is refused with the likely mistake.
+TEST(SceneConfigParser, TheFractureEnergyIsOffByDefaultAndReadInJoulesPerSquareMetre) {
+    EXPECT_EQ(sceneFromOverrides({}).stem.bending.fractureEnergy, 0.0);
+    EXPECT_EQ(sceneFromOverrides({"stem.parameters=toe2018"}).stem.bending.fractureEnergy, 0.0);
+    EXPECT_EQ(sceneFromOverrides({"stem.fracture_energy_j_m2=5e4"}).stem.bending.fractureEnergy, 5e4);
+    EXPECT_THROW(sceneFromOverrides({"stem.fracture_energy_j_m2=-1"}), sylva::InputError);
+    try {
+        sceneFromOverrides({"stem.fracture_energy_j_m2=94e6"});
+        FAIL() << "a strength in Pa accepted as a fracture energy";
+    } catch (const sylva::InputError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("stem.fracture_energy_j_m2"), std::string::npos) << what;
+        EXPECT_NE(what.find("a strength in Pa typed for an energy"), std::string::npos) << what;
+    }
+}
+
 namespace {
 std::string refusal(const std::vector<std::string>& overrides) {
     try {

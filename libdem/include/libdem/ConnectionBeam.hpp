@@ -31,8 +31,8 @@ public:
                    int sections);
 
     // Brings the connection to the relative rotation `theta` (about x, y of the connection frame, rad)
-    // and the transverse stretch `stretch` (x, y, m). A section reaching M_Rupt breaks the connection:
-    // it transmits nothing from then on.
+    // and the transverse stretch `stretch` (x, y, m). Without a fracture energy a section reaching
+    // M_Rupt breaks the connection: it transmits nothing from then on (with one, see ruptureReached).
     HingeWork deform(const Vec2& theta, const Vec2& stretch);
     // Breaks the connection now; its stored energy is released.
     HingeWork snap();

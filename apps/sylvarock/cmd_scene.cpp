@@ -70,6 +70,7 @@ void writeRelease(const std::string& path, const dem::Scene& scene, const dem::R
         << p.x() << ',' << p.y() << ',' << p.z() << ',' << q.w() << ',' << q.x() << ',' << q.y() << ',' << q.z() << ','
         << block.mass() << ',' << inertia.x() << ',' << inertia.y() << ',' << inertia.z() << ',' << soil.xmin() << ','
         << soil.xmax() << ',' << soil.ymin() << ',' << soil.ymax() << ',' << v.x() << ',' << v.y() << ',' << v.z() << '\n';
+    rel.close();  // a small file fails only when its buffer is written
     if (!rel) throw InputError(path, 0, "write failed (disk full?)");
 }
 
@@ -81,6 +82,7 @@ void writeSoilContact(const std::string& path, const dem::Scene& scene) {
     out << std::setprecision(12) << "kn_n_m,kt_n_m,damping_n_s,friction_deg,normal_force_floored,gravity_m_s2\n"
         << p.kn << ',' << law.tangentialStiffness() << ',' << law.dampingCoefficient() << ',' << p.frictionDeg << ','
         << (p.dashpotPulls ? 0 : 1) << ',' << scene.config().gravity << '\n';
+    out.close();
     if (!out) throw InputError(path, 0, "write failed (disk full?)");
 }
 
@@ -88,8 +90,9 @@ void writeSoilContact(const std::string& path, const dem::Scene& scene) {
 void writeBlockSpheres(const std::string& path, const dem::RigidBody& block) {
     std::ofstream out(path);
     if (!out) throw cannotWrite(path);
-    out << "x,y,z,r\n";
+    out << std::setprecision(12) << "x,y,z,r\n";
     for (const auto& s : block.spheres()) out << s.offset.x() << ',' << s.offset.y() << ',' << s.offset.z() << ',' << s.radius << '\n';
+    out.close();
     if (!out) throw InputError(path, 0, "write failed (disk full?)");
 }
 

@@ -23,6 +23,7 @@ struct Softening {
     double booked = 0;      // dissipated less created, as the stem's ledger has it, J
     double section = 0;     // A of the connection's section, m^2
     double length = 0;      // l, m
+    bool turnedBack = false;  // the stem was turned back past rupture, as asked
 };
 
 // The foot connection of a clamped 20 cm beech bent alone, quasi-statically, by turning the stem above
@@ -31,10 +32,10 @@ struct Softening {
 // built. The work is the trapezoid of the nodes' forces and torques over the imposed motion, computed
 // from the forces, not from the ledger. Past rupture by `reverseAfter` (rad), the stem is turned back.
 Softening bendFootConnection(double spacing, double fractureEnergy,
-                             double reverseAfter = std::numeric_limits<double>::infinity()) {
+                             double reverseAfter = std::numeric_limits<double>::infinity(), int sections = 1) {
     StemParams p;
     p.nodeSpacing = spacing;
-    p.bending.sections = 1;  // M_Rupt at the connection's own D_con, exactly
+    p.bending.sections = sections;  // 1: M_Rupt at the connection's own D_con, exactly
     p.bending.fractureEnergy = fractureEnergy;
     Stem stem(beechStem(20), p, Vec3::Zero(), StemFoot::Clamped);
     const std::vector<Vec3> rest = stem.position;
@@ -47,11 +48,11 @@ Softening bendFootConnection(double spacing, double fractureEnergy,
             stem.orientation[j] = turn;
         }
     };
+    Softening s;
     std::vector<Vec3> force(n, Vec3::Zero()), torque(n, Vec3::Zero());
     const double dt = 1;  // the nodes stand still: no viscous moment, no axial dashpot
     stem.updateConnections(force, torque, dt);
 
-    Softening s;
     s.length = stem.connectionLength(0);
     s.section = kPi * std::pow(stem.connectionDiameter(0), 2) / 4;
     // 4 000 increments over the softening's theta_f at 5e4 J/m^2 (0.04 rad here): the trapezoid's and
@@ -61,7 +62,10 @@ Softening bendFootConnection(double spacing, double fractureEnergy,
     while (!stem.broken(0) && std::abs(alpha) < 1) {
         const std::vector<Vec3> position = stem.position, f0 = force, t0 = torque;
         const bool ruptured = stem.bending(0).ruptureReached();
-        if (ruptured && dAlpha > 0 && alpha - alphaAtRupture > reverseAfter) dAlpha = -dAlpha;
+        if (ruptured && dAlpha > 0 && alpha - alphaAtRupture > reverseAfter) {
+            dAlpha = -dAlpha;
+            s.turnedBack = true;
+        }
         alpha += dAlpha;
         pose(alpha);
         for (std::size_t j = 0; j < n; ++j) force[j].setZero(), torque[j].setZero();
@@ -104,11 +108,27 @@ TEST(StemFracture, ACrackBentBackCostsNoMoreThanOneBentOneWay) {
     for (const double spacing : {0.5, 0.25}) {
         const double thetaF = 16 * gf / (94e6 * 0.2);  // about: the foot's D_con is near the DBH
         const Softening s = bendFootConnection(spacing, gf, 0.25 * thetaF);
+        EXPECT_TRUE(s.turnedBack) << "l = " << s.length;
         std::printf("  l = %.3f m, bent back: %.1f J from M_Rupt to broken, G_f A = %.1f J; %.1f J in all, %.1f J booked\n",
                     s.length, s.afterRupture, gf * s.section, s.total, s.booked);
         // Turned back, the hinge unloads and reloads elastically to -M_Rupt, storing and returning the
         // same (1 - d) psi0; the tolerance is the one-way test's.
         EXPECT_NEAR(s.afterRupture, gf * s.section, 0.01 * gf * s.section) << "l = " << s.length;
+        EXPECT_NEAR(s.booked, s.total, 2e-3 * s.total) << "l = " << s.length;
+    }
+}
+
+// With three sections (the calibrated set's) one end reaches M_Rupt first while the others still
+// harden: their work opens the crack too, and the intact moment, hence psi0, still grows a little
+// after rupture, released at the break. That costs more than G_f A: 2.3 % at 0.5 m, 0.5 % at 0.25 m
+// (a measured residual of the law, docs/model-stems.md), so 3 % here; a doubling would fail.
+TEST(StemFracture, WithThreeSectionsTheCostStaysNearGfA) {
+    const double gf = 5e4;
+    for (const double spacing : {0.5, 0.25}) {
+        const Softening s = bendFootConnection(spacing, gf, std::numeric_limits<double>::infinity(), 3);
+        std::printf("  l = %.3f m, 3 sections: %.1f J from M_Rupt to broken, G_f A = %.1f J\n", s.length, s.afterRupture,
+                    gf * s.section);
+        EXPECT_NEAR(s.afterRupture, gf * s.section, 0.03 * gf * s.section) << "l = " << s.length;
         EXPECT_NEAR(s.booked, s.total, 2e-3 * s.total) << "l = " << s.length;
     }
 }

@@ -5,9 +5,8 @@
 
 namespace sylva::dem {
 
-ConnectionFracture::ConnectionFracture(double fractureEnergy, double sigmaRupt, double diameter)
-    : fractureRotation_(16 * fractureEnergy / (sigmaRupt * diameter)),
-      openingWork_(0.5 * std::acos(-1.0) * fractureEnergy * diameter * diameter),
+ConnectionFracture::ConnectionFracture(double fractureEnergy, double diameter)
+    : openingWork_(0.5 * std::acos(-1.0) * fractureEnergy * diameter * diameter),
       radius_(0.5 * diameter) {}
 
 double ConnectionFracture::advance(double plasticWork, const Vec2& slip, double intactEnergy) {

@@ -120,7 +120,7 @@ Stem::Stem(const StemGeometry& g, const StemParams& p, const Vec3& foot, StemFoo
         connections_.push_back(Connection{l, dCon, p.bending.moe * area / l / p.axialSoftening, shearModulus * polar / l,
                                           std::move(beam), damping});
         if (p.bending.fractureEnergy > 0)
-            connections_.back().fracture = ConnectionFracture(p.bending.fractureEnergy, p.bending.sigmaRupt, dCon);
+            connections_.back().fracture = ConnectionFracture(p.bending.fractureEnergy, dCon);
     }
 
     if (p.root.anchorage == RootAnchorage::StemWeight) {
@@ -198,8 +198,8 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         const HingeWork w = theta.squaredNorm() > kFoldedConnection * kFoldedConnection ? k.bending.snap()
                                                              : k.bending.deform(theta.head<2>(), stretch.head<2>());
         // Once a connection with a fracture energy has reached M_Rupt it transmits (1 - d) of what its
-        // intact bending and shear would (ConnectionFracture); its hinge's flow at M_Rupt is then the
-        // fracture's work. Without one, d stays 0 and the products below are exact.
+        // intact bending and shear would (ConnectionFracture); its hinge's plastic work is then the
+        // fracture's. Without one, d stays 0 and the products below are exact.
         const double kept = k.fracture.carried();
         (k.fracture.started() ? ledger.rupture : ledger.bendingPlasticity) += kept * w.dissipated;
         ledger.unloadingGain += kept * w.created;

@@ -2,7 +2,8 @@
 // How a stem connection breaks once a section has reached M_Rupt (Eq. 6), given a fracture energy
 // G_f: what it transmits of its bending and shear falls linearly to nothing over a further plastic
 // hinge rotation theta_f, so that breaking costs G_f per m^2 of its section whatever the connection's
-// length and whichever way it is bent (the crack band's regularisation, Bazant & Oh 1983, Materiaux et Constructions 16:155).
+// length and whichever way it is bent (the crack band's regularisation, Bazant & Oh 1983, Materiaux
+// et Constructions 16:155).
 // Without one (G_f = 0, the paper) the connection breaks at once (ConnectionBeam).
 // docs/model-stems.md, "A fracture energy".
 //
@@ -18,8 +19,9 @@ namespace sylva::dem {
 class ConnectionFracture {
 public:
     ConnectionFracture() = default;  // brittle: never softens
-    // theta_f = 2 G_f A / M_Rupt = 16 G_f / (sigma_Rupt D) for a round section of diameter D, rad.
-    ConnectionFracture(double fractureEnergy, double sigmaRupt, double diameter);
+    // theta_f = 2 G_f A / M_Rupt = 16 G_f / (sigma_Rupt D) for a round section of diameter D, rad: the
+    // intact hinge's plastic work M_Rupt theta_f = 2 G_f A opens the crack through.
+    ConnectionFracture(double fractureEnergy, double diameter);
 
     // The intact hinge has flowed, dissipating `plasticWork` (J) this step, and the connection has slid
     // by `slip` (m, its shear stretch), its intact springs storing `intactEnergy` (J); M_Rupt was
@@ -29,10 +31,9 @@ public:
     double carried() const { return 1 - damage_; }  // the share of the intact forces transmitted
     bool started() const { return started_; }
     bool through() const { return damage_ >= 1; }  // broken: nothing transmitted any more
-    double fractureRotation() const { return fractureRotation_; }
+    double openingWork() const { return openingWork_; }
 
 private:
-    double fractureRotation_ = std::numeric_limits<double>::infinity();  // theta_f, rad
     double openingWork_ = std::numeric_limits<double>::infinity();  // M_Rupt theta_f = 2 G_f A, J
     double radius_ = 0;  // D / 2, m
     bool started_ = false;

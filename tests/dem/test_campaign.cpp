@@ -348,8 +348,9 @@ TEST(SimulateCli, TheEnergyFileCountsTheConnectionsABrokenStemLost) {
 }
 
 // With a fracture energy, the impact that stopped on the energy audit at t = 1.04 s when a
-// half-broken connection let its node slide 2.2 m sideways (docs/model-stems.md, "A fracture
-// energy"): it now runs to its end, and the stem still breaks.
+// half-broken connection let its node slide 2.2 m sideways (the prototype, opened by |theta|;
+// docs/model-stems.md, "A fracture energy"): it runs to its end, and the stem still breaks. Opened by
+// plastic work, it runs even without the faces' bound, which ConnectionFracture.* test on their own.
 TEST(SimulateCli, AStemWithAFractureEnergyBreaksWithinTheEnergyAudit) {
     const auto out = std::filesystem::temp_directory_path() / "sylvarock-tests" / "single-tree-fracture";
     std::filesystem::remove_all(out);

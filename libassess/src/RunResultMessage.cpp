@@ -9,8 +9,8 @@ namespace {
 
 // A field added to RunResult must travel too. This is RunResult's size (x86-64) with the fields
 // below; it changes with the struct, and then this file must be looked at.
-static_assert(sizeof(dem::RunResult) == 536, "dem::RunResult changed: send its new fields in RunResultMessage.cpp");
-static_assert(std::is_trivially_copyable_v<dem::TreeImpact> && std::is_trivially_copyable_v<dem::EnergyBudget> &&
+static_assert(sizeof(dem::RunResult) == 560, "dem::RunResult changed: send its new fields in RunResultMessage.cpp");
+static_assert(std::is_trivially_copyable_v<dem::TreeImpact> && std::is_trivially_copyable_v<dem::StemBreak> && std::is_trivially_copyable_v<dem::EnergyBudget> &&
               std::is_trivially_copyable_v<dem::PhaseTimes> && std::is_trivially_copyable_v<dem::NodeSteps> &&
               std::is_trivially_copyable_v<dem::ForestLedger>);
 
@@ -32,6 +32,8 @@ void put(ByteWriter& w, const dem::RunResult& r) {
     w.put(r.phases).put(r.nodeSteps).put(r.energy).put(r.forestEnergy);
     w.put(static_cast<std::uint64_t>(r.impacts.size()));
     for (const auto& impact : r.impacts) w.put(impact);
+    w.put(static_cast<std::uint64_t>(r.breaks.size()));
+    for (const auto& b : r.breaks) w.put(b);
     w.put(static_cast<std::uint64_t>(r.trajectory.size()));
     for (const auto& s : r.trajectory) {
         w.put(s.t);
@@ -66,6 +68,8 @@ dem::RunResult getRunResult(ByteReader& in) {
     r.forestEnergy = in.get<dem::ForestLedger>();
     r.impacts.resize(in.count(sizeof(dem::TreeImpact)));
     for (auto& impact : r.impacts) impact = in.get<dem::TreeImpact>();
+    r.breaks.resize(in.count(sizeof(dem::StemBreak)));
+    for (auto& b : r.breaks) b = in.get<dem::StemBreak>();
     r.trajectory.resize(in.count(12 * sizeof(double)));
     for (auto& s : r.trajectory) {
         s.t = in.get<double>();

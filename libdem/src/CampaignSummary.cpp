@@ -135,6 +135,7 @@ void writeImpactEnergyJson(const std::string& path, const RunResult& r) {
         j["kinetic_after_j"] = i.energyAfter;
         j["speed_before_m_s"] = i.speedBefore;
         j["speed_after_m_s"] = i.speedAfter;
+        j["impact_time_s"] = i.time;  // since release, at first contact
         j["impact_height_m"] = i.height;
         j["eccentricity"] = i.eccentricity;
         j["stem_broken"] = i.stemBroken;
@@ -143,11 +144,18 @@ void writeImpactEnergyJson(const std::string& path, const RunResult& r) {
         j["break_height_m"] = i.breakHeight;  // null: not broken
         j["stem_breaks"] = i.stemBreaks;
         j["stem_height_m"] = i.stemHeight;
+        // Each of its connections that broke in the run, in the order they broke: where a whipped stem
+        // snapped, how thin it was there, and whether it broke under the block or when its pieces landed.
+        Json breaks = Json::array();
+        for (const StemBreak& b : r.breaks)
+            if (b.tree == i.tree) breaks.push_back({{"time_s", b.time}, {"height_m", b.height}, {"diameter_cm", 100 * b.diameter}});
+        j["breaks"] = breaks;
     } else {
         j["stem_broken"] = false;
         j["root_yielded"] = false;
         j["root_failed"] = false;
         j["stem_breaks"] = 0;
+        j["breaks"] = Json::array();
     }
     j["dissipated_j"] = {{"bending_plasticity", f.bendingPlasticity}, {"bending_damping", f.bendingDamping},
                          {"axial_damping", f.axialDamping},           {"root_plasticity", f.rootPlasticity},       {"rupture", f.rupture},

@@ -321,6 +321,11 @@ void ForestMotion::integrate(double dt) {
             a.broken = broken;
             // A new break makes new pieces, and pairs of them that may touch (listStemPairs).
             if (a.stem.breaks() != a.breaksSeen) stemPairsStale_ = true;
+            const long id = trees_.tree(a.tree).id;
+            for (std::size_t k = a.breaksSeen; k < a.stem.breaks(); ++k) {
+                const std::uint32_t c = a.stem.breakOrder()[k];
+                breaks_.push_back({id, now_, a.stem.connectionHeight(c), a.stem.connectionDiameter(c)});
+            }
             a.breaksSeen = a.stem.breaks();
         }
     }

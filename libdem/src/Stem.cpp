@@ -207,7 +207,7 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
         if (k.bending.broken()) {
             // M_Rupt reached (Eq. 6, brittle) or folded: resistance lost along all axes
             ledger.rupture += kept * w.released + linear + kept * k.damping.release();
-            ++breaks_;
+            breakOrder_.push_back(static_cast<std::uint32_t>(c));
             continue;
         }
 
@@ -228,7 +228,7 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
                 k.bending.snap();
                 k.damping.release();
                 ledger.rupture += linear;
-                ++breaks_;
+                breakOrder_.push_back(static_cast<std::uint32_t>(c));
                 continue;
             }
             stored += k.fracture.carried() * intact + linear;
@@ -277,7 +277,7 @@ void Stem::updateConnections(std::vector<Vec3>& force, std::vector<Vec3>& torque
 
 double Stem::lowestBreakHeight() const {
     for (std::size_t c = 0; c < connections_.size(); ++c)
-        if (connections_[c].bending.broken()) return 0.5 * (restHeight_[c] + restHeight_[c + 1]);
+        if (connections_[c].bending.broken()) return connectionHeight(c);
     return std::nan("");
 }
 

@@ -345,6 +345,11 @@ TEST(SimulateCli, TheEnergyFileCountsTheConnectionsABrokenStemLost) {
     const int breaks = std::stoi(energy.substr(at + key.size()));
     EXPECT_GE(breaks, 1);
     EXPECT_LE(breaks, 23);
+    // And each, with when it broke: at least those counted, the impact closed before later ones.
+    int listed = 0;
+    for (auto k = energy.find("\"time_s\""); k != std::string::npos; k = energy.find("\"time_s\"", k + 1)) ++listed;
+    EXPECT_GE(listed, breaks) << energy;
+    EXPECT_NE(energy.find("\"diameter_cm\""), std::string::npos) << energy;
 }
 
 // With a fracture energy, the impact that stopped on the energy audit at t = 1.04 s when a

@@ -2,6 +2,7 @@
 // closes, and a stem breaks or not depending on the block's energy.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <string>
@@ -170,6 +171,34 @@ TEST(TreeImpact, DebrisFallingOnTheBlockLaterIsNotPartOfTheImpact) {
     const TreeImpact coarse = impact("0.5"), fine = impact("0.25");
     std::cout << "block after the impact: " << coarse.energyAfter << " J (0.5 m), " << fine.energyAfter << " J (0.25 m)\n";
     EXPECT_NEAR(coarse.energyAfter, fine.energyAfter, 0.02 * fine.energyBefore);
+}
+
+// Every broken connection is recorded with the run's time, its height and its diameter: at least the
+// breaks the impact counted, on its tree, in the order of time, from the first contact on; each
+// within the stem, the lowest the impact's break height, and thinner the higher it is (the stem tapers).
+TEST(TreeImpact, EachBreakIsRecordedWhereAndWhenTheStemBrokeThere) {
+    const RunResult r = launch({"tree.dbh_cm=15", "block.speed_m_s=10", "stem.node_spacing_m=0.5"});
+    ASSERT_EQ(r.impacts.size(), 1u);
+    const TreeImpact& impact = r.impacts.front();
+    ASSERT_TRUE(impact.stemBroken);
+    ASSERT_GE(r.breaks.size(), impact.stemBreaks);
+    double lowest = impact.stemHeight;
+    std::vector<std::pair<double, double>> byHeight;
+    for (std::size_t k = 0; k < r.breaks.size(); ++k) {
+        const StemBreak& b = r.breaks[k];
+        EXPECT_EQ(b.tree, impact.tree);
+        EXPECT_GE(b.time, k == 0 ? impact.time : r.breaks[k - 1].time) << k;
+        EXPECT_LE(b.time, r.duration) << k;
+        EXPECT_GT(b.height, 0) << k;
+        EXPECT_LT(b.height, impact.stemHeight) << k;
+        EXPECT_GT(b.diameter, 0) << k;
+        EXPECT_LT(b.diameter, 0.15) << k;  // the DBH, 1.3 m up; every connection broke above the foot's
+        lowest = std::min(lowest, b.height);
+        byHeight.emplace_back(b.height, b.diameter);
+    }
+    EXPECT_EQ(lowest, impact.breakHeight);
+    std::sort(byHeight.begin(), byHeight.end());
+    for (std::size_t k = 1; k < byHeight.size(); ++k) EXPECT_LT(byHeight[k].second, byHeight[k - 1].second) << k;
 }
 
 // A broken top falls on the soil and loses energy in the soil's dashpot there (Eq. 16 on the mass

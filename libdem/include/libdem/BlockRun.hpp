@@ -61,6 +61,14 @@ struct TreeImpact {
     StemLedger duringImpact;
 };
 
+// A stem connection that broke (Eq. 6's rupture, a fracture gone through, or a fold past pi / 2).
+struct StemBreak {
+    long tree = 0;        // stem id in the forest file
+    double time = 0;      // s since release, at the start of the step that broke it
+    double height = 0;    // m above the foot, of the connection's middle in the unloaded stem
+    double diameter = 0;  // m, D_con: its strength goes with D^3 (Eq. 6), its fracture energy with D^2
+};
+
 struct RunResult {
     int run = 0;
     std::uint64_t seed = 0;
@@ -75,6 +83,7 @@ struct RunResult {
     NodeSteps nodeSteps;  // its stems' work
     EnergyBudget energy;
     std::vector<TreeImpact> impacts;
+    std::vector<StemBreak> breaks;  // every stem's, in the order they broke
     ForestLedger forestEnergy;
     std::vector<TrajectorySample> trajectory;  // filled when asked for
     std::string failure;  // StopReason::Failed: what stopped it

@@ -64,6 +64,7 @@ public:
         return a ? &a->stem : nullptr;
     }
     ForestLedger ledger() const;
+    const std::vector<StemBreak>& breaks() const { return breaks_; }  // so far, in the order they broke
 
 private:
     struct AwakeStem {
@@ -173,6 +174,7 @@ private:
     ContactSet<StemStemTouch> stemTouches_;
     ContactSet<StemSoilTouch> soilTouches_;
     ImpactRecorder impacts_;
+    std::vector<StemBreak> breaks_;
     std::vector<std::uint32_t> nearTrees_, nearSoil_;
     std::vector<Eigen::AlignedBox3d> boxes_;  // per awake stem (listStemPairs)
     std::vector<std::size_t> nearA_, nearB_;  // a pair's connections inside the other stem's box (listStemPairs)

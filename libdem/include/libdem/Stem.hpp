@@ -72,11 +72,16 @@ public:
     double nodeRadius(std::size_t node) const { return 0.5 * diameterAt(restHeight(node)); }
     double connectionLength(std::size_t c) const { return connections_[c].length; }  // l, between nodes c and c+1
     double connectionDiameter(std::size_t c) const { return connections_[c].diameter; }  // D_con, between nodes c and c+1
+    // Above the foot, of the connection's middle in the unloaded stem: where a break is said to be.
+    double connectionHeight(std::size_t c) const { return 0.5 * (restHeight_[c] + restHeight_[c + 1]); }
     const ConnectionBeam& bending(std::size_t c) const { return connections_[c].bending; }
     bool broken(std::size_t c) const { return connections_[c].bending.broken(); }
-    bool anyConnectionBroken() const { return breaks_ > 0; }
+    bool anyConnectionBroken() const { return !breakOrder_.empty(); }
     // How many connections have broken: a new break makes new pieces (and new pairs of them to touch).
-    std::size_t breaks() const { return breaks_; }
+    std::size_t breaks() const { return breakOrder_.size(); }
+    // The broken connections in the order they broke: a caller that knows the run's clock can tell
+    // when each broke from which are new since it last looked (ForestMotion::integrate).
+    const std::vector<std::uint32_t>& breakOrder() const { return breakOrder_; }
     // Rest height above the foot of the middle of the lowest broken connection (NaN if none): a
     // whipped top that snaps is not a stem broken at its foot.
     double lowestBreakHeight() const;
@@ -125,7 +130,7 @@ private:
     std::vector<Connection> connections_;
     RootSpring root_;
     double elasticEnergy_ = 0;
-    std::size_t breaks_ = 0;  // connections broken (updateConnections counts them as they break)
+    std::vector<std::uint32_t> breakOrder_;  // connections broken (updateConnections adds them as they break)
 };
 
 }  // namespace sylva::dem

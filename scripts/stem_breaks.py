@@ -10,9 +10,9 @@ within 1 ms of the one before (a stem unzipping, one connection after the other)
 
 Prints one line per impact and spacing, then the medians over the impacts per spacing.
 """
-import argparse, concurrent.futures, itertools, json, os, statistics, subprocess, sys, tempfile
+import concurrent.futures, itertools, json, os, statistics, subprocess, sys, tempfile
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from single_tree import arguments, simulate
 BOLE_CM = 5.0      # thinner is the top: where Eq. 6's strength (D^3) and a fracture energy's (D^2) vanish
 BURST_S = 1e-3     # the unzipping fronts measured cross a connection in 0.04-0.5 ms; the block's touch lasts ~0.1 s
 WHIP_S = 0.2       # a piece broken off 10 m up takes ~1.4 s to land
@@ -20,11 +20,7 @@ WHIP_S = 0.2       # a piece broken off 10 m up takes ~1.4 s to land
 
 def energy_of(exe, extra, dbh, speed, h):
     with tempfile.TemporaryDirectory() as out:
-        cmd = [exe, "simulate", "--scene", os.path.join(ROOT, "data/scenes/single-tree.ini"), "--set", f"tree.dbh_cm={dbh}",
-               "--set", f"block.speed_m_s={speed}", "--set", "block.impact_height_m=1", "--set", "block.eccentricity=0",
-               "--set", f"stem.node_spacing_m={h}", "--no-figures", "--out", out]
-        for kv in extra:
-            cmd += ["--set", kv]
+        cmd = simulate(exe, out, dbh, speed, 1, 0, h, extra) + ["--no-figures"]
         r = subprocess.run(cmd, capture_output=True, text=True)
         if r.returncode:
             sys.exit(f"{' '.join(cmd)}: exit {r.returncode}: {r.stderr.strip()[-300:]}")
@@ -43,14 +39,7 @@ def summary(energy):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--exe", default=os.path.join(ROOT, "build/apps/sylvarock"))
-    ap.add_argument("--spacings", default="0.5,0.25,0.125")
-    ap.add_argument("--dbh", default="15,20,25,30")
-    ap.add_argument("--speeds", default="10,15,25")
-    ap.add_argument("--threads", type=int, default=2)
-    ap.add_argument("--set", action="append", default=[], help="extra scene key=value for every run")
-    a = ap.parse_args()
+    a = arguments(__doc__, dbh="15,20,25,30", speeds="10,15,25").parse_args()
     spacings = a.spacings.split(",")
     cases = list(itertools.product(a.dbh.split(","), a.speeds.split(",")))
     with concurrent.futures.ThreadPoolExecutor(a.threads) as pool:

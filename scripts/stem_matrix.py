@@ -9,21 +9,16 @@ The tree's energy is that of the impact (energy.json impact_dissipated_j: bendin
 bending damping, root plasticity, rupture from first contact to the block leaving), so broken pieces
 are not followed to rest (forest.piece_max_time_s = 0): what they do later is not the impact's.
 """
-import argparse, concurrent.futures, csv, itertools, json, os, statistics, subprocess, sys, tempfile, time
+import concurrent.futures, csv, itertools, json, os, statistics, subprocess, sys, tempfile, time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from single_tree import ROOT, arguments, simulate
 TREE_TERMS = ("bending_plasticity", "bending_damping", "axial_damping", "root_plasticity", "rupture")
 CROWN_SHARE = 0.40642  # L_C / H_T, the paper's Eq. 12
 
 
 def run_one(exe, extra, dbh, speed, height, ecc, h, volume):
     with tempfile.TemporaryDirectory() as out:
-        cmd = [exe, "simulate", "--scene", os.path.join(ROOT, "data/scenes/single-tree.ini"),
-               "--set", f"tree.dbh_cm={dbh}", "--set", f"block.speed_m_s={speed}",
-               "--set", f"block.impact_height_m={height}", "--set", f"block.eccentricity={ecc}",
-               "--set", f"stem.node_spacing_m={h}", "--set", "forest.piece_max_time_s=0", "--out", out]
-        for kv in extra:
-            cmd += ["--set", kv]
+        cmd = simulate(exe, out, dbh, speed, height, ecc, h, ["forest.piece_max_time_s=0"] + list(extra))
         if volume:
             cmd += ["--set", f"block.volume_m3={volume}"]
         start = time.process_time()
@@ -44,15 +39,9 @@ def run_one(exe, extra, dbh, speed, height, ecc, h, volume):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--exe", default=os.path.join(ROOT, "build/apps/sylvarock"))
-    ap.add_argument("--spacings", default="0.5,0.25,0.125")
-    ap.add_argument("--dbh", default="10,15,20,25,30,40")
-    ap.add_argument("--speeds", default="5,10,15,25")
+    ap = arguments(__doc__, dbh="10,15,20,25,30,40", speeds="5,10,15,25")
     ap.add_argument("--heights", default="0.5,1,2")
     ap.add_argument("--eccentricities", default="0,0.5")
-    ap.add_argument("--threads", type=int, default=2)
-    ap.add_argument("--set", action="append", default=[], help="extra scene key=value for every run")
     ap.add_argument("--volume-at-height", action="append", default=None, metavar="H:V",
                     help="block volume V (m3) for the impacts at height H (m); default 0.5:0.1, as the scene's "
                          "0.5 m3 cube (bounding radius 0.54 m) cannot fly with its centre 0.5 m up")

@@ -83,12 +83,13 @@ def main():
         row["tree_gap"], row["block_gap"] = round(dt, 4), round(db, 4)
         row["tree_gap_own"] = round(abs(a0["tree_j"] - a1["tree_j"]) / max(a1["tree_j"], 1.0), 4)
         row["same_outcome"] = int(a0["broken"] == a1["broken"] and a0["root_failed"] == a1["root_failed"])
+        row["same_break"] = int(a0["broken"] == a1["broken"])
         row["same_bole"] = int(a0["bole_broken"] == a1["bole_broken"])
         if a0["break_m"] != "" and a1["break_m"] != "":
             row["break_shift_m"] = round(abs(a0["break_m"] - a1["break_m"]), 2)
     os.makedirs(os.path.dirname(a.out), exist_ok=True)
     with open(a.out + ".csv", "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()) + [k for k in ("tree_gap", "block_gap", "tree_gap_own", "same_outcome", "same_bole", "break_shift_m") if k not in rows[0]])
+        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()) + [k for k in ("tree_gap", "block_gap", "tree_gap_own", "same_outcome", "same_break", "same_bole", "break_shift_m") if k not in rows[0]])
         w.writeheader()
         w.writerows(rows)
     # Impacts that did not run at both spacings are listed as problems, not counted as gaps.
@@ -108,7 +109,8 @@ def main():
           f"{within(gaps_own, 0.05)}/{len(valid)} within 5 %, {within(gaps_own, 0.10)}/{len(valid)} within 10 %")
     print(f"  block's exit energy: median gap {gaps_b[len(gaps_b)//2]:.3f}, worst {worst['block']:.3f}, "
           f"{within(gaps_b, 0.05)}/{len(valid)} within 5 %")
-    print(f"  same outcome (stem broken or not, root plate let go or not): {same}/{len(valid)}")
+    print(f"  same outcome (stem broken or not, root plate let go or not): {same}/{len(valid)}; "
+          f"stem broken or not alone: {sum(r.get('same_break', 0) for r in rows)}/{len(valid)}")
     shifts = sorted(r["break_shift_m"] for r in rows if "break_shift_m" in r)
     if shifts:
         print(f"  broken at both: lowest break moved by median {shifts[len(shifts)//2]:.2f} m, "

@@ -11,14 +11,14 @@ are not followed to rest (forest.piece_max_time_s = 0): what they do later is no
 """
 import concurrent.futures, csv, itertools, json, os, statistics, subprocess, sys, tempfile, time
 
-from single_tree import ROOT, arguments, simulate
+from single_tree import ROOT, arguments, simulate_command
 TREE_TERMS = ("bending_plasticity", "bending_damping", "axial_damping", "root_plasticity", "rupture")
 CROWN_SHARE = 0.40642  # L_C / H_T, the paper's Eq. 12
 
 
 def run_one(exe, extra, dbh, speed, height, ecc, h, volume):
     with tempfile.TemporaryDirectory() as out:
-        cmd = simulate(exe, out, dbh, speed, height, ecc, h, ["forest.piece_max_time_s=0"] + list(extra))
+        cmd = simulate_command(exe, out, dbh, speed, height, ecc, h, ["forest.piece_max_time_s=0"] + list(extra))
         if volume:
             cmd += ["--set", f"block.volume_m3={volume}"]
         start = time.process_time()

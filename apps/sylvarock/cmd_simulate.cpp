@@ -155,6 +155,7 @@ std::optional<Simulation> readSimulation(int argc, const char* const* argv) {
         }
     c.threads = threadCount(vm);
     c.run.recordTrajectory = vm["trajectory"].as<bool>();
+    c.run.recordBreaks = sim.scene->config().launch.enabled;  // energy.json lists the struck stem's
     if (assess::MpiWorld::current().coordinator()) prepareOutFolder(sim.out);  // once every option has been read
     return sim;
 }

@@ -200,7 +200,7 @@ RunResult simulateBlock(const Scene& scene, int run, std::uint64_t seed, const R
     r.setStop(block.position, soil, path);
     r.energy = motion.energy();
     r.impacts = motion.forest().finish(block);
-    r.breaks = motion.forest().breaks();
+    if (options.recordBreaks) r.breaks = motion.forest().breaks();
     r.forestEnergy = motion.forest().ledger();
     return r;
 }

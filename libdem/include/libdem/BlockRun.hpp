@@ -83,7 +83,7 @@ struct RunResult {
     NodeSteps nodeSteps;  // its stems' work
     EnergyBudget energy;
     std::vector<TreeImpact> impacts;
-    std::vector<StemBreak> breaks;  // every stem's, in the order they broke
+    std::vector<StemBreak> breaks;  // every stem's, in the order they broke (RunOptions::recordBreaks)
     ForestLedger forestEnergy;
     std::vector<TrajectorySample> trajectory;  // filled when asked for
     std::string failure;  // StopReason::Failed: what stopped it
@@ -95,6 +95,9 @@ struct RunResult {
 
 struct RunOptions {
     bool recordTrajectory = false;
+    // Every stem break in RunResult::breaks: a launch's energy.json lists them; a campaign's runs,
+    // each breaking tens of connections, need not carry them (nor send them between ranks).
+    bool recordBreaks = false;
     // Release above this point (x, y) instead of the scene's release point and range (hazard maps:
     // a point drawn in a release cell); the fall height and the orientation stay the scene's.
     std::optional<Eigen::Vector2d> releaseAt;

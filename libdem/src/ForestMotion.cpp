@@ -71,7 +71,7 @@ void ForestMotion::wake(std::uint32_t tree, double t) {
     // The all-awake reference steps every stem, standing or not.
     awakeSlot_[tree] = awake_.size();
     awake_.emplace_back(tree, std::move(stem), stability, t, broken, cfg_.activity.allAwake);
-    awake_.back().breaksSeen = awake_.back().stem.breaks();
+    awake_.back().breaksSeen = awake_.back().stem.breakCount();
     stemPairsStale_ = true;
 }
 
@@ -316,17 +316,17 @@ void ForestMotion::integrate(double dt) {
         // and the block account for: energy + dissipated - created, at the step's start.
         stems += e.total() + e.netLoss + 0.5 * (externalBefore + a.stem.ledger.externalWork);
         const bool broken = falling(a.stem);
-        if (broken != a.broken || a.stem.breaks() != a.breaksSeen) {
+        if (broken != a.broken || a.stem.breakCount() != a.breaksSeen) {
             a.stability = a.stem.stability();  // a broken connection no longer limits the step
             a.broken = broken;
             // A new break makes new pieces, and pairs of them that may touch (listStemPairs).
-            if (a.stem.breaks() != a.breaksSeen) stemPairsStale_ = true;
+            if (a.stem.breakCount() != a.breaksSeen) stemPairsStale_ = true;
             const long id = trees_.tree(a.tree).id;
-            for (std::size_t k = a.breaksSeen; k < a.stem.breaks(); ++k) {
+            for (std::size_t k = a.breaksSeen; k < a.stem.breakCount(); ++k) {
                 const std::uint32_t c = a.stem.breakOrder()[k];
                 breaks_.push_back({id, now_, a.stem.connectionHeight(c), a.stem.connectionDiameter(c)});
             }
-            a.breaksSeen = a.stem.breaks();
+            a.breaksSeen = a.stem.breakCount();
         }
     }
     budget_ += stems + contactLedger_.friction + contactLedger_.contactDamping + contactLedger_.crushing + frozenElastic_ + frozenPotential_ + slept_.frozen + slept_.bendingPlasticity +

@@ -61,7 +61,7 @@ void ImpactRecorder::closeAt(std::size_t index, const RigidBody& block, const St
     Impact& i = impacts_[index];
     i.record.stemBroken = stem.anyConnectionBroken();
     i.record.breakHeight = stem.lowestBreakHeight();
-    i.record.stemBreaks = stem.breaks();
+    i.record.stemBreaks = stem.breakCount();
     i.record.stemHeight = stem.geometry().height;
     i.record.rootYielded = stem.ledger.rootPlasticity > 0;
     i.record.rootFailed = stem.root().failed();

@@ -78,7 +78,7 @@ public:
     bool broken(std::size_t c) const { return connections_[c].bending.broken(); }
     bool anyConnectionBroken() const { return !breakOrder_.empty(); }
     // How many connections have broken: a new break makes new pieces (and new pairs of them to touch).
-    std::size_t breaks() const { return breakOrder_.size(); }
+    std::size_t breakCount() const { return breakOrder_.size(); }
     // The broken connections in the order they broke: a caller that knows the run's clock can tell
     // when each broke from which are new since it last looked (ForestMotion::integrate).
     const std::vector<std::uint32_t>& breakOrder() const { return breakOrder_; }

@@ -98,7 +98,7 @@ std::optional<Simulation> readSimulation(int argc, const char* const* argv) {
         ("runs", po::value<int>(), "number of block runs (default 100; 1 for a single-tree launch)")
         ("seed", po::value<Seed>()->default_value(Seed{}, "1"), "campaign seed; run i uses a seed derived from (seed, i)")
         ("threads", po::value<int>()->default_value(0), "worker threads (0: all cores); results do not depend on it")
-        ("out", po::value<std::string>(), "output directory (runs.csv, summary.json, impacts.csv, figures)")
+        ("out", po::value<std::string>(), "output directory (runs.csv, summary.json, impacts.csv, figures; a single-tree launch also energy.json: where the block's energy went, the tree's terms, each break with its time, height and diameter; docs/model-stems.md)")
         ("forest", po::value<std::string>(), kForestHelp)
         ("trajectory", po::bool_switch(), "also write sampled trajectories (CSV and VTK) to OUT/trajectories/")
         ("block", po::value<std::string>(), "block shape override: cube | cuboid | sphere")
@@ -112,6 +112,7 @@ std::optional<Simulation> readSimulation(int argc, const char* const* argv) {
                "  sylvarock simulate --scene data/scenes/no-forest.ini --runs 4 --trajectory --block sphere --out out/t\n"
                "  sylvarock simulate --scene data/scenes/no-forest.ini --set soil.friction_deg=35 --out out/phi35\n"
                "  sylvarock simulate --scene data/scenes/no-forest.ini --model lumped --runs 60000 --out out/lumped\n"
+               "  sylvarock simulate --scene data/scenes/single-tree.ini --set tree.dbh_cm=20 --set block.speed_m_s=10 --out out/tree\n"
                "  mpirun -np 8 sylvarock simulate ... --threads 1   (8 MPI ranks, same results; docs/cluster.md)\n"))
         return std::nullopt;
     if (vm["help-scene"].as<bool>()) {

@@ -48,27 +48,32 @@ StemGeometry beechStem(double dbhCm) {
     return g;
 }
 
-std::vector<double> Stem::connectionLengths(const StemGeometry& g, const StemParams& p) {
+std::vector<double> Stem::connectionLengths(const StemGeometry& g, const StemParams& p, std::size_t* footCount) {
     const auto cut = [](double span, double spacing, std::vector<double>& lengths) {
         const std::size_t n = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(span / spacing - 1e-9)));
         lengths.insert(lengths.end(), n, span / n);
     };
     const double height = g.height;
     std::vector<double> lengths;
+    const double foot = std::min(p.footZone, height);
+    if (foot > 0) cut(foot, 0.5 * p.nodeSpacing, lengths);
+    const std::size_t inFoot = lengths.size();
+    if (footCount) *footCount = inFoot;
+    if (height <= foot) return lengths;
     // A bole the block's push whips breaks up to its crown base (a 20 cm stem, 13.9 m high, at 7-8 m
     // against a base at 8.2 m): cut coarser there, the break's place and its release move by a whole
     // connection.
     const double crownBase = height - g.crownLength;
-    const double zone = p.upperSpacingFactor > 1 ? std::min(std::max(p.struckZone, crownBase), height) : height;
-    cut(zone, p.nodeSpacing, lengths);
+    const double zone = p.upperSpacingFactor > 1 ? std::min(std::max({p.struckZone, crownBase, foot}), height) : height;
+    if (zone > foot) cut(zone - foot, p.nodeSpacing, lengths);
     if (height > zone) {
         const double lower = lengths.back();
         cut(height - zone, p.upperSpacingFactor * p.nodeSpacing, lengths);
         // Connections above the zone shorter than below it would shorten the step for nothing: a stem
         // barely taller than the zone is cut at the node spacing all the way up.
         if (lengths.back() < lower) {
-            lengths.clear();
-            cut(height, p.nodeSpacing, lengths);
+            lengths.resize(inFoot);
+            cut(height - foot, p.nodeSpacing, lengths);
         }
     }
     return lengths;
@@ -84,8 +89,15 @@ Stem::Stem(const StemGeometry& g, const StemParams& p, const Vec3& foot, StemFoo
     : geometry_(g), params_(p), support_(support), footRest_(Quat::Identity()), root_(p.root, p.bending.reading) {
     sylva::dem::validate(p);
     validate(g, p);
-    const std::vector<double> length = connectionLengths(g, p);
+    std::size_t footCount = 0;
+    const std::vector<double> length = connectionLengths(g, p, &footCount);
     const std::size_t n = length.size();
+    // The foot zone's connections, l_f long against l_c above it, would shorten the explicit step by
+    // l_f / l_c: the axial and shear elements' frequencies go as 1 / l. Their axial and shear springs
+    // softened and their nodes' rotational inertia raised by (l_c / l_f)^2 keep each element's
+    // frequency where the coarse ones' is (docs/model-stems.md, "The foot zone").
+    const double footScale = footCount > 0 && footCount < n ? std::pow(length[footCount] / length[0], 2) : 1.0;
+    const auto scaled = [&](std::size_t c) { return c < footCount ? footScale : 1.0; };
     restHeight_.assign(1, 0);
     for (std::size_t c = 0, first = 0; c < n; ++c) {
         if (length[c] != length[first]) first = c;  // the upper zone begins
@@ -115,10 +127,10 @@ Stem::Stem(const StemGeometry& g, const StemParams& p, const Vec3& foot, StemFoo
         const double dCon = 0.5 * (da + db);  // mean diameter between the nodes
         const double area = kPi * dCon * dCon / 4;
         const double polar = kPi * std::pow(dCon, 4) / 32;
-        ConnectionBeam beam(p.bending, da, db, shearModulus * area / l, l, p.bending.sections);
+        ConnectionBeam beam(p.bending, da, db, shearModulus * area / l / scaled(c), l, p.bending.sections);
         const BendingDamping damping(p.bending, beam.coefficients());
-        connections_.push_back(Connection{l, dCon, p.bending.moe * area / l / p.axialSoftening, shearModulus * polar / l,
-                                          std::move(beam), damping});
+        connections_.push_back(Connection{l, dCon, p.bending.moe * area / l / p.axialSoftening / scaled(c),
+                                          shearModulus * polar / l, std::move(beam), damping});
         if (p.bending.fractureEnergy > 0)
             connections_.back().fracture = ConnectionFracture(p.bending.fractureEnergy, dCon);
     }
@@ -147,7 +159,7 @@ Stem::Stem(const StemGeometry& g, const StemParams& p, const Vec3& foot, StemFoo
 
     for (std::size_t i = 0; i <= n; ++i) {
         const double share = 0.5 * ((i == 0 ? 0 : length[i - 1]) + (i == n ? 0 : length[i]));
-        inertia_[i] = mass_[i] * (diameter[i] * diameter[i] / 16 + share * share / 12);
+        inertia_[i] = mass_[i] * (diameter[i] * diameter[i] / 16 + share * share / 12) * (i < n ? scaled(i) : 1.0);
         inverseMass_.push_back(1 / mass_[i]);
         inverseInertia_.push_back(1 / inertia_[i]);
     }

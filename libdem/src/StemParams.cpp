@@ -35,6 +35,7 @@ void validate(const StemParams& p) {
     require(std::isfinite(p.nodeSpacing) && p.nodeSpacing > 0, "node spacing (m)", p.nodeSpacing, "> 0");
     require(std::isfinite(p.upperSpacingFactor) && p.upperSpacingFactor >= 1, "upper spacing factor", p.upperSpacingFactor, ">= 1");
     require(std::isfinite(p.struckZone) && p.struckZone > 0, "struck zone (m)", p.struckZone, "> 0");
+    require(std::isfinite(p.footZone) && p.footZone >= 0, "foot zone (m)", p.footZone, ">= 0");
     require(std::isfinite(p.tipDiameter) && p.tipDiameter >= 0, "tip diameter (m)", p.tipDiameter, ">= 0");
     require(std::isfinite(p.axialSoftening) && p.axialSoftening >= 1, "axial softening", p.axialSoftening, ">= 1");
 }

@@ -314,3 +314,33 @@ TEST(TreeImpact, GradedStemAgreesAtHalfTheSpacing) {
     const auto [whipped, finer] = expectTheSameImpacts("graded, 0.5 m", coarse, "graded, 0.25 m", fine, 0.05).front();
     EXPECT_NEAR(treeTerms(whipped), treeTerms(finer), 0.05 * treeTerms(finer));
 }
+
+// stem.foot_zone_m (docs/model-stems.md, "The foot zone"): an impact one connection above the foot is
+// not resolved at 0.5 m without it. The single-tree matrix's worst gap, 10 cm at 10 m/s, 0.1 m3, 0.5 m
+// up: at 0.5 m the foot connection breaks and the block leaves with 6.2 of its 13.7 kJ, at 0.25 m the
+// root plate fails and it keeps 0.5 kJ. With the lowest metre at half the spacing, 0.5 and 0.25 m agree
+// within the 5 % of the impact energy issue 11 asks. Measured: tree 8.15 | 8.11 kJ, block after 0.71 |
+// 0.70 kJ (0.3 and 0.1 %).
+TEST(TreeImpact, FootZoneResolvesAnImpactJustAboveTheFoot) {
+    const std::vector<std::string> low{"block.impact_height_m=0.5", "block.volume_m3=0.1", "stem.foot_zone_m=1"};
+    auto at = [&](const char* spacing) {
+        std::vector<std::string> keys = low;
+        keys.push_back(std::string("stem.node_spacing_m=") + spacing);
+        return impactOn("10", "10", keys);
+    };
+    const TreeImpact coarse = at("0.5"), fine = at("0.25");
+    std::cout << "10 cm at 10 m/s, 0.5 m up: tree " << treeTerms(coarse) << " | " << treeTerms(fine) << " J, block after "
+              << coarse.energyAfter << " | " << fine.energyAfter << " J of " << fine.energyBefore << " J\n";
+    EXPECT_NEAR(treeTerms(coarse), treeTerms(fine), 0.05 * fine.energyBefore);
+    EXPECT_NEAR(coarse.energyAfter, fine.energyAfter, 0.05 * fine.energyBefore);
+    EXPECT_EQ(coarse.stemBroken, fine.stemBroken);
+    EXPECT_EQ(coarse.rootFailed, fine.rootFailed);
+}
+
+// And on the impacts the other resolutions are held to (1 m up), the foot-zoned stem at 0.5 and at
+// 0.25 m within the same 5 % of the impact energy. Measured: tree 1.1, 0.2 and 1.4 %, block 1.9, 0.3
+// and 2.5 %.
+TEST(TreeImpact, FootZonedStemAgreesAtHalfTheSpacing) {
+    expectTheSameImpacts("foot zone, 0.5 m", {"stem.foot_zone_m=1"}, "foot zone, 0.25 m",
+                         {"stem.foot_zone_m=1", "stem.node_spacing_m=0.25"}, 0.05);
+}

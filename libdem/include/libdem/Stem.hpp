@@ -2,7 +2,8 @@
 // A tree stem as a chain of rigid nodes from the foot up (paper Sect. 2.1.2, Fig. 2).
 // Geometry: a truncated cone through the DBH at 1.3 m, tapering linearly to StemParams::tipDiameter
 // at H_T, cut into equal connections of length l up to StemParams::nodeSpacing (a graded stem: equal
-// ones so up to the crown base, and equal ones up to StemParams::upperSpacingFactor times that above it).
+// ones so up to the crown base, and equal ones up to StemParams::upperSpacingFactor times that above it;
+// a foot zone: its lowest StemParams::footZone metres at half that).
 // Each cone segment's mass goes half to each of its nodes; the crown mass m_C is spread over the nodes
 // within L_C of the top, each carrying the crown along the connection below it (equally, on equal
 // connections, as the paper spreads it). Between neighbouring nodes a connection of length l
@@ -103,10 +104,12 @@ public:
     double stableTimeStep() const;
     StableStep stability() const;  // the two bounds, to which contacts add theirs
 
-    // Where the stem is cut: connections of equal length, at most StemParams::nodeSpacing, up to the
-    // crown base (at least the struck zone's top), and at most upperSpacingFactor times that above it
-    // (docs/model-stems.md, "A graded stem").
-    static std::vector<double> connectionLengths(const StemGeometry& g, const StemParams& p);
+    // Where the stem is cut, from the foot up: the foot zone's equal connections at most half
+    // StemParams::nodeSpacing long (docs/model-stems.md, "The foot zone"), then equal connections at
+    // most nodeSpacing long up to the crown base (at least the struck zone's top), and at most
+    // upperSpacingFactor times that above it (docs/model-stems.md, "A graded stem"). `footCount`, if
+    // given, receives how many connections the foot zone has.
+    static std::vector<double> connectionLengths(const StemGeometry& g, const StemParams& p, std::size_t* footCount = nullptr);
 
 private:
     struct Connection {

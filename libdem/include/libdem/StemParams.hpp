@@ -65,6 +65,12 @@ struct StemParams {
     // Refining the node spacing refines both parts. A resolution (docs/model-stems.md, "A graded stem").
     double upperSpacingFactor = 1;
     double struckZone = 4;  // m above the foot, the least height cut at nodeSpacing
+    // The lowest footZone metres, where blocks strike stems (MO1 A: a tenth of the impacts below
+    // 0.54 m), the root turns and the moment is largest, are cut at half nodeSpacing. Their
+    // connections' axial and shear springs are softened, and their nodes' rotational inertia raised,
+    // by the square of the ratio of the connection above the zone to theirs, so that they do not
+    // shorten the explicit step. 0: none, as the paper's (docs/model-stems.md, "The foot zone").
+    double footZone = 0;
     double tipDiameter = 0.01;   // m, diameter of the truncated cone at H_T (docs/model-stems.md)
     // The axial springs' stiffness MOE A / l is divided by this. A numerical device, not wood: the
     // axial wave, l sqrt(rho / MOE), limits the explicit step while the bending allows 1.8-4.5 times more at 0.5 m,

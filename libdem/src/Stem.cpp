@@ -96,11 +96,14 @@ Stem::Stem(const StemGeometry& g, const StemParams& p, const Vec3& foot, StemFoo
     // l_f / l_c: the axial and shear elements' frequencies go as 1 / l. Their axial and shear springs
     // softened and their nodes' rotational inertia raised by (l_c / l_f)^2 keep each element's
     // frequency where the coarse ones' is (docs/model-stems.md, "The foot zone").
-    const double footScale = footCount > 0 && footCount < n ? std::pow(length[footCount] / length[0], 2) : 1.0;
+    // Never below 1: a coarse part thinner than the zone's connections (a graded stem's sliver above
+    // it) is not a reason to stiffen the zone.
+    const double footScale = footCount > 0 && footCount < n ? std::max(1.0, std::pow(length[footCount] / length[0], 2)) : 1.0;
+    // Connection c, and node c below it (the foot's and the zone's nodes but its top one).
     const auto scaled = [&](std::size_t c) { return c < footCount ? footScale : 1.0; };
     restHeight_.assign(1, 0);
     for (std::size_t c = 0, first = 0; c < n; ++c) {
-        if (length[c] != length[first]) first = c;  // the upper zone begins
+        if (length[c] != length[first]) first = c;  // the next zone (above the foot zone, or the graded stem's upper one) begins
         restHeight_.push_back(restHeight_[first] + static_cast<double>(c + 1 - first) * length[c]);
     }
 
@@ -159,7 +162,7 @@ Stem::Stem(const StemGeometry& g, const StemParams& p, const Vec3& foot, StemFoo
 
     for (std::size_t i = 0; i <= n; ++i) {
         const double share = 0.5 * ((i == 0 ? 0 : length[i - 1]) + (i == n ? 0 : length[i]));
-        inertia_[i] = mass_[i] * (diameter[i] * diameter[i] / 16 + share * share / 12) * (i < n ? scaled(i) : 1.0);
+        inertia_[i] = mass_[i] * (diameter[i] * diameter[i] / 16 + share * share / 12) * scaled(i);
         inverseMass_.push_back(1 / mass_[i]);
         inverseInertia_.push_back(1 / inertia_[i]);
     }

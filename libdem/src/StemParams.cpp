@@ -35,7 +35,10 @@ void validate(const StemParams& p) {
     require(std::isfinite(p.nodeSpacing) && p.nodeSpacing > 0, "node spacing (m)", p.nodeSpacing, "> 0");
     require(std::isfinite(p.upperSpacingFactor) && p.upperSpacingFactor >= 1, "upper spacing factor", p.upperSpacingFactor, ">= 1");
     require(std::isfinite(p.struckZone) && p.struckZone > 0, "struck zone (m)", p.struckZone, "> 0");
-    require(std::isfinite(p.footZone) && p.footZone >= 0, "foot zone (m)", p.footZone, ">= 0");
+    // Shorter than the node spacing, its connections would be much shorter than half of it (0.3 m at
+    // 0.5 m: two of 0.15 m), and their springs and inertia scaled by up to (l_c / l_f)^2 = 100.
+    require(std::isfinite(p.footZone) && (p.footZone == 0 || p.footZone >= p.nodeSpacing), "foot zone (m)", p.footZone,
+            "0 or at least the node spacing (" + std::to_string(p.nodeSpacing) + " m)");
     require(std::isfinite(p.tipDiameter) && p.tipDiameter >= 0, "tip diameter (m)", p.tipDiameter, ">= 0");
     require(std::isfinite(p.axialSoftening) && p.axialSoftening >= 1, "axial softening", p.axialSoftening, ">= 1");
 }

@@ -10,7 +10,8 @@
 // and mean diameter D_con carries linear elastic axial and twist springs (MOE and
 // G = MOE / (2 (1 + nu)); the axial one damped by wood's loss factor) and, for bending and shear, a ConnectionBeam (the trilinear law of Fig. 3
 // on its sections), which once M_Rupt is reached breaks at once (Eq. 6) or softens over a
-// ConnectionFracture. The foot is clamped (coppice stems) or held
+// ConnectionFracture. A foot zone's connections have their axial and shear springs softened and
+// their nodes' rotational inertia raised, so that they keep the stem's step. The foot is clamped (coppice stems) or held
 // in place and turning on the root spring (single trees). A broken connection transmits nothing:
 // the part above keeps moving as a free chain.
 // Node state is kept as arrays over nodes so that a step is a few loops over contiguous memory.

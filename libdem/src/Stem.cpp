@@ -99,8 +99,11 @@ Stem::Stem(const StemGeometry& g, const StemParams& p, const Vec3& foot, StemFoo
     // Never below 1: a coarse part thinner than the zone's connections (a graded stem's sliver above
     // it) is not a reason to stiffen the zone.
     const double footScale = footCount > 0 && footCount < n ? std::max(1.0, std::pow(length[footCount] / length[0], 2)) : 1.0;
-    // Connection c, and node c below it (the foot's and the zone's nodes but its top one).
-    const auto scaled = [&](std::size_t c) { return c < footCount ? footScale : 1.0; };
+    // Connection c's springs; node i's rotational inertia, the zone's top node included: the coarse
+    // connection above it hinges on it as on the nodes of a coarse stem, which are heavier.
+    const auto scaledSpring = [&](std::size_t c) { return c < footCount ? footScale : 1.0; };
+    const auto scaledTurn = [&](std::size_t i) { return i <= footCount ? footScale : 1.0; };
+    const auto frustumMass = [&](double l, double da, double db) { return p.density * kPi * l * (da * da + da * db + db * db) / 12; };
     restHeight_.assign(1, 0);
     for (std::size_t c = 0, first = 0; c < n; ++c) {
         if (length[c] != length[first]) first = c;  // the next zone (above the foot zone, or the graded stem's upper one) begins
@@ -123,16 +126,16 @@ Stem::Stem(const StemGeometry& g, const StemParams& p, const Vec3& foot, StemFoo
     for (std::size_t c = 0; c < n; ++c) {
         const double da = diameter[c], db = diameter[c + 1], l = length[c];
         // The cone's segment (a frustum), half on each node.
-        const double segmentMass = p.density * kPi * l * (da * da + da * db + db * db) / 12;
+        const double segmentMass = frustumMass(l, da, db);
         mass_[c] += 0.5 * segmentMass;
         mass_[c + 1] += 0.5 * segmentMass;
 
         const double dCon = 0.5 * (da + db);  // mean diameter between the nodes
         const double area = kPi * dCon * dCon / 4;
         const double polar = kPi * std::pow(dCon, 4) / 32;
-        ConnectionBeam beam(p.bending, da, db, shearModulus * area / l / scaled(c), l, p.bending.sections);
+        ConnectionBeam beam(p.bending, da, db, shearModulus * area / l / scaledSpring(c), l, p.bending.sections);
         const BendingDamping damping(p.bending, beam.coefficients());
-        connections_.push_back(Connection{l, dCon, p.bending.moe * area / l / p.axialSoftening / scaled(c),
+        connections_.push_back(Connection{l, dCon, p.bending.moe * area / l / p.axialSoftening / scaledSpring(c),
                                           shearModulus * polar / l, std::move(beam), damping});
         if (p.bending.fractureEnergy > 0)
             connections_.back().fracture = ConnectionFracture(p.bending.fractureEnergy, dCon);
@@ -162,7 +165,16 @@ Stem::Stem(const StemGeometry& g, const StemParams& p, const Vec3& foot, StemFoo
 
     for (std::size_t i = 0; i <= n; ++i) {
         const double share = 0.5 * ((i == 0 ? 0 : length[i - 1]) + (i == n ? 0 : length[i]));
-        inertia_[i] = mass_[i] * (diameter[i] * diameter[i] / 16 + share * share / 12) * scaled(i);
+        inertia_[i] = mass_[i] * (diameter[i] * diameter[i] / 16 + share * share / 12) * scaledTurn(i);
+    }
+    // The root spring turns the foot alone, and the zone leaves its stiffness the coarse stem's: the
+    // foot turns as the coarse stem's foot at least (half its first connection, lumped as above), or
+    // on a thin stem, whose inertia the connections' share sets, the root would set a shorter step.
+    if (footScale > 1) {
+        const double lc = length[footCount], d0 = diameter[0];
+        inertia_[0] = std::max(inertia_[0], 0.5 * frustumMass(lc, d0, diameterAt(lc)) * (d0 * d0 / 16 + lc * lc / 48));
+    }
+    for (std::size_t i = 0; i <= n; ++i) {
         inverseMass_.push_back(1 / mass_[i]);
         inverseInertia_.push_back(1 / inertia_[i]);
     }
@@ -316,18 +328,24 @@ double Stem::stableTimeStep() const { return stability().critical(); }
 
 StableStep Stem::stability() const {
     const std::size_t n = nodeCount();
-    // How many connections share each node: its unbroken ones. The root spring is one element with the
-    // first connection while that holds (a partition of the stiffness like any other), alone after.
-    std::vector<int> holders(n, 0);
+    // The bound holds for any split of a node's mass and inertia among the elements that hold it: its
+    // unbroken connections. Split in proportion to the wood each brings (l D_con^2), which is half and
+    // half on a uniform stem up to the taper, and at the top of a foot zone hands the coarse connection
+    // its own half segment (2/3 of the node), not half of a node lightened by the zone's shorter one.
+    // The root spring is one element with the first connection while that holds (a partition of the
+    // stiffness like any other), alone after.
+    const auto wood = [&](std::size_t c) { return connections_[c].length * connections_[c].diameter * connections_[c].diameter; };
+    std::vector<double> held(n, 0.0);
     for (std::size_t c = 0; c < connections_.size(); ++c)
-        if (!connections_[c].bending.broken()) ++holders[c], ++holders[c + 1];
-    const auto invMass = [&](std::size_t i) { return translates(i) ? holders[i] / mass_[i] : 0.0; };
-    const auto invInertia = [&](std::size_t i) { return rotates(i) ? holders[i] / inertia_[i] : 0.0; };
+        if (!connections_[c].bending.broken()) held[c] += wood(c), held[c + 1] += wood(c);
     double omega2 = 0, gamma = 0;  // the elements' largest
     for (std::size_t c = 0; c < connections_.size(); ++c) {
         const Connection& k = connections_[c];
         if (k.bending.broken()) continue;
         const std::size_t a = c, b = c + 1;
+        // This element's share of node i's mass and inertia is wood(c) / held[i] of them.
+        const auto invMass = [&](std::size_t i) { return translates(i) ? held[i] / wood(c) / mass_[i] : 0.0; };
+        const auto invInertia = [&](std::size_t i) { return rotates(i) ? held[i] / wood(c) / inertia_[i] : 0.0; };
         const double ma = invMass(a), mb = invMass(b), ia = invInertia(a), ib = invInertia(b);
         // One plane: (u_a, phi_a, u_b, phi_b) -> theta = phi_b - phi_a and eps = (2 / l) (u_b - u_a) + phi_a + phi_b
         // (ConnectionBeam's generalised deformations of a straight connection), up to signs that do not
@@ -345,7 +363,7 @@ StableStep Stem::stability() const {
         // The bending dashpot acts on theta, the axial one along the connection.
         gamma = std::max({gamma, k.damping.viscosity() * (ia + ib), k.axialDamping * (ma + mb)});
     }
-    if (support_ == StemFoot::RootSpring && holders[0] == 0) omega2 = std::max(omega2, root_.stiffness() / inertia_[0]);
+    if (support_ == StemFoot::RootSpring && held[0] == 0) omega2 = std::max(omega2, root_.stiffness() / inertia_[0]);
     // The fastest mode and the most damped one need not be the same: both bounds enter together.
     StableStep bound;
     bound.add(omega2, gamma, 1);

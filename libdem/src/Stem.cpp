@@ -99,8 +99,8 @@ Stem::Stem(const StemGeometry& g, const StemParams& p, const Vec3& foot, StemFoo
     // Never below 1: a coarse part thinner than the zone's connections (a graded stem's sliver above
     // it) is not a reason to stiffen the zone.
     const double footScale = footCount > 0 && footCount < n ? std::max(1.0, std::pow(length[footCount] / length[0], 2)) : 1.0;
-    // Connection c's springs; node i's rotational inertia, the zone's top node included: the coarse
-    // connection above it hinges on it as on the nodes of a coarse stem, which are heavier.
+    // Connection c's springs; node i's rotational inertia, the zone's top node included: lightened by
+    // the zone's short connection below it, it would let the coarse connection above it set the step.
     const auto scaledSpring = [&](std::size_t c) { return c < footCount ? footScale : 1.0; };
     const auto scaledTurn = [&](std::size_t i) { return i <= footCount ? footScale : 1.0; };
     const auto frustumMass = [&](double l, double da, double db) { return p.density * kPi * l * (da * da + da * db + db * db) / 12; };
@@ -163,16 +163,18 @@ Stem::Stem(const StemGeometry& g, const StemParams& p, const Vec3& foot, StemFoo
     for (std::size_t i = 0; i <= n; ++i)
         if (inCrown(i)) mass_[i] += g.crownMass / crownSpan * carried(i);
 
+    // A share of the stem L long about its centre.
+    const auto lumped = [](double m, double d, double share) { return m * (d * d / 16 + share * share / 12); };
     for (std::size_t i = 0; i <= n; ++i) {
         const double share = 0.5 * ((i == 0 ? 0 : length[i - 1]) + (i == n ? 0 : length[i]));
-        inertia_[i] = mass_[i] * (diameter[i] * diameter[i] / 16 + share * share / 12) * scaledTurn(i);
+        inertia_[i] = lumped(mass_[i], diameter[i], share) * scaledTurn(i);
     }
-    // The root spring turns the foot alone, and the zone leaves its stiffness the coarse stem's: the
-    // foot turns as the coarse stem's foot at least (half its first connection, lumped as above), or
-    // on a thin stem, whose inertia the connections' share sets, the root would set a shorter step.
+    // The root spring is not softened with the zone, and a thin stem's foot inertia is set by its share
+    // of the stem, l_f / 2 against l_c / 2: scaled as the zone is, it would still turn faster on the
+    // root than the coarse stem's foot, and the root's element would set the step. Floor it there.
     if (footScale > 1) {
         const double lc = length[footCount], d0 = diameter[0];
-        inertia_[0] = std::max(inertia_[0], 0.5 * frustumMass(lc, d0, diameterAt(lc)) * (d0 * d0 / 16 + lc * lc / 48));
+        inertia_[0] = std::max(inertia_[0], lumped(0.5 * frustumMass(lc, d0, diameterAt(lc)), d0, lc / 2));
     }
     for (std::size_t i = 0; i <= n; ++i) {
         inverseMass_.push_back(1 / mass_[i]);
@@ -180,8 +182,10 @@ Stem::Stem(const StemGeometry& g, const StemParams& p, const Vec3& foot, StemFoo
     }
     // Wood's loss factor damps its axial vibration as it damps its bending (docs/model-stems.md,
     // "Time step"): a dashpot c = eta k / omega, omega the connection's highest axial frequency
-    // (omega^2 = k (1/m_a + 1/m_b), each node's mass shared by its connections, as stableTimeStep
-    // bounds it), gives the loss factor eta there and less below. The paper's stem has none.
+    // (omega^2 = k (1/m_a + 1/m_b), each node's mass halved between its two connections, the top's
+    // whole: a nominal frequency that sets c once; stability() splits the masses by the wood, which
+    // differs from it by the taper on a uniform stem), gives the loss factor eta there and less below.
+    // The paper's stem has none.
     if (p.bending.damping == StemDamping::ConstantLoss)
         for (std::size_t c = 0; c < n; ++c) {
             const auto share = [&](std::size_t i) { return translates(i) ? (i == n ? 1.0 : 2.0) / mass_[i] : 0.0; };

@@ -58,7 +58,8 @@ public:
     std::size_t connectionCount() const { return connections_.size(); }
     const std::vector<double>& mass() const { return mass_; }
     // Rotational inertia of each node about its centre, taken isotropic: that of its share of the
-    // stem about a transverse axis, m (D^2/16 + L^2/12), L the share's length.
+    // stem about a transverse axis, m (D^2/16 + L^2/12), L the share's length (raised in a foot zone:
+    // docs/model-stems.md, "The foot zone").
     const std::vector<double>& inertia() const { return inertia_; }
     // Their reciprocals, which every step multiplies by (a division costs several multiplications).
     const std::vector<double>& inverseMass() const { return inverseMass_; }

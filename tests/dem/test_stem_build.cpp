@@ -209,7 +209,8 @@ TEST(StemBuild, AFootZoneIsCutAtHalfTheSpacingAndKeepsNearlyTheStep) {
         EXPECT_NEAR(mz, mu, 1e-9 * mu) << "the same wood and crown";
         // The zone's nodes, its top one included, turn as if (l_c / l_f)^2 times heavier about their
         // centres; those above it as the wood's (m (D^2 / 16 + share^2 / 12), Stem's lumping); the foot
-        // at least as the uniform stem's foot, on the same root spring.
+        // at least as a coarse stem's foot would (half the connection above the zone, lumped alike), on
+        // the same root spring.
         const double scale = std::pow(above / 0.25, 2);
         const auto lumped = [&](const Stem& s, std::size_t i, double share) {
             const double d = s.diameterAt(s.restHeight(i));

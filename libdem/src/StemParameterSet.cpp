@@ -26,6 +26,7 @@ void apply(StemParameterSet set, StemParams& stem, StemContactParams& contact) {
     stem.root.anchorage = RootAnchorage::StemWeight;    // "Anchorage": M_a = C_reg x stem mass
     stem.root.failureRotation = 25 * std::acos(-1.0) / 180;  // "The root plate lets go"
     stem.axialSoftening = 2;                            // "Time step": the axial springs softened
+    stem.footZone = 1;                                  // "The foot zone": its lowest metre at half the spacing
 }
 
 StemParams stemParameters(StemParameterSet set) {

@@ -77,8 +77,9 @@ std::string forestFile() {
 }  // namespace
 
 TEST(SceneExportCli, WritesEveryStemAtRestNodeByNode) {
-    // stem.node_spacing_m, stem.upper_spacing_factor, stem.struck_zone_m, stem.tip_diameter_m (default)
-    const double spacing = 0.75, upper = 1.5, struckZone = 4, tip = 0.01;  // upper: 2 x the node spacing
+    // stem.node_spacing_m, stem.upper_spacing_factor, stem.struck_zone_m, stem.tip_diameter_m and
+    // stem.foot_zone_m (the calibrated set's)
+    const double spacing = 0.75, upper = 1.5, struckZone = 4, tip = 0.01, foot = 1;  // upper: 2 x the node spacing
     const std::string out = (exportDir() / "forest-out").string();
     std::filesystem::remove_all(out);
     const CliRun r = sceneExport("--scene " + slopeScene() + " --forest " + forestFile() +
@@ -90,15 +91,20 @@ TEST(SceneExportCli, WritesEveryStemAtRestNodeByNode) {
     for (const auto& t : kForest) {
         ASSERT_EQ(stems.count(t.id), 1u) << t.id;
         const auto& nodes = stems.at(t.id);
-        // Equal connections of at most 0.75 m up to the crown base (Eq. 12: 7.1, 10.3 and 12.0 m for 12,
-        // 17.3 and 20.25 m, all above the 4 m struck zone), then ceil((H - base) / 1.5) equal ones.
+        // The foot zone's metre in equal connections of at most 0.375 m (three), equal ones of at most
+        // 0.75 m up to the crown base (Eq. 12: 7.1, 10.3 and 12.0 m for 12, 17.3 and 20.25 m, all
+        // above the 4 m struck zone), then ceil((H - base) / 1.5) equal ones.
         const double zone = std::max(struckZone, t.heightM - sylva::stand::crownLengthM(t.heightM));
         ASSERT_GT(zone, struckZone) << t.id;
-        const std::size_t lower = static_cast<std::size_t>(std::ceil(zone / spacing));
+        const std::size_t inFoot = static_cast<std::size_t>(std::ceil(foot / (0.5 * spacing)));
+        const std::size_t lower = inFoot + static_cast<std::size_t>(std::ceil((zone - foot) / spacing));
         const std::size_t above = static_cast<std::size_t>(std::ceil((t.heightM - zone) / upper));
         const auto restHeight = [&](std::size_t k) {
-            return k <= lower ? k * zone / lower : zone + (t.heightM - zone) * static_cast<double>(k - lower) / above;
+            if (k <= inFoot) return k * foot / inFoot;
+            if (k <= lower) return foot + (zone - foot) * static_cast<double>(k - inFoot) / (lower - inFoot);
+            return zone + (t.heightM - zone) * static_cast<double>(k - lower) / above;
         };
+        ASSERT_EQ(inFoot, 3u);
         ASSERT_EQ(nodes.size(), lower + above + 1) << t.id;
         // 9 significant digits in the file: 1e-6 m on coordinates below 100 m.
         const double tol = 1e-6;

@@ -219,7 +219,9 @@ TEST(StemBuild, AFootZoneIsCutAtHalfTheSpacingAndKeepsNearlyTheStep) {
         const double d0 = zoned.diameterAt(0), d1 = zoned.diameterAt(above);
         const double coarseFoot = 0.5 * p.density * std::acos(-1.0) * above * (d0 * d0 + d0 * d1 + d1 * d1) / 12 * (d0 * d0 / 16 + above * above / 48);
         EXPECT_NEAR(zoned.inertia()[0], std::max(scale * lumped(zoned, 0, 0.125), coarseFoot), 1e-9 * zoned.inertia()[0]);
-        if (dbh == 10.0) EXPECT_GT(coarseFoot, scale * lumped(zoned, 0, 0.125)) << "a thin stem's foot takes the floor";
+        if (dbh == 10.0) {
+            EXPECT_GT(coarseFoot, scale * lumped(zoned, 0, 0.125)) << "a thin stem's foot takes the floor";
+        }
         EXPECT_NEAR(zoned.inertia()[2], scale * lumped(zoned, 2, 0.25), 1e-9 * zoned.inertia()[2]);
         EXPECT_NEAR(zoned.inertia()[4], scale * lumped(zoned, 4, 0.5 * (0.25 + above)), 1e-9 * zoned.inertia()[4]);
         EXPECT_NEAR(zoned.inertia()[5], lumped(zoned, 5, above), 1e-9 * zoned.inertia()[5]);

@@ -69,8 +69,8 @@ struct StemParams {
     // 0.54 m), the root turns and the moment is largest, are cut at half nodeSpacing. Their
     // connections' axial and shear springs are softened, and their nodes' rotational inertia raised,
     // by the square of the ratio of the connection above the zone to theirs, so that they do not
-    // shorten the explicit step. 0: none, as the paper's; else at least nodeSpacing (docs/model-stems.md,
-    // "The foot zone").
+    // shorten the explicit step. 0: none, as the paper's (Table 2's defaults here); else at least
+    // nodeSpacing. The calibrated set's is 1 m (docs/model-stems.md, "The foot zone").
     double footZone = 0;
     double tipDiameter = 0.01;   // m, diameter of the truncated cone at H_T (docs/model-stems.md)
     // The axial springs' stiffness MOE A / l is divided by this. A numerical device, not wood: the

@@ -454,8 +454,12 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
                 "soil.restitution is given too and sets the damping; give one of the two");
     // The calibrated set's metre of foot zone, under a node spacing coarser than it, becomes the lowest
     // connection cut in two: refusing a scene for a key it never set would teach nothing.
-    if (vm["stem.foot_zone_m"].defaulted() && c.stem.footZone > 0 && c.stem.footZone < c.stem.nodeSpacing)
+    if (c.stem.footZone > 0 && c.stem.footZone < c.stem.nodeSpacing) {
+        if (!vm["stem.foot_zone_m"].defaulted())
+            throw refuse("stem.foot_zone_m", "stem.foot_zone_m = " + text(c.stem.footZone) + " m is shorter than stem.node_spacing_m = " +
+                                                 text(c.stem.nodeSpacing) + " m: give 0 (no zone) or at least the node spacing");
         c.stem.footZone = c.stem.nodeSpacing;
+    }
     validate(c.stem);
     c.release.yRangeGiven = vm.count("release.y_min_m") || vm.count("release.y_max_m");
     if (!vm.count("release.y_min_m")) c.release.yMin = c.release.y;

@@ -502,9 +502,9 @@ TEST(ExtremeForest, StemsTouchingAtGenerationStayAtRest) {
 // Now it lands on the stump and slides off it: no node of the top's pieces ever sinks into the stump
 // by more than the stem/stem contact lets two stems overlap (a few centimetres under a 1.3 t piece;
 // the stump is 0.3-0.5 m thick, which is how deep the top went through it). A node alone between two
-// breaks (with a foot zone, the top's upper ten connections shatter into eight such nodes, which then
-// fell 0.41 m deep) meets the block but not stems, by design (docs/model-stems.md, "... but not yet
-// other stems"), so it is left out.
+// breaks meets the block but not stems, a documented limitation (docs/model-stems.md, "... but not
+// yet other stems"), so it is left out: with the default's foot zone the top's upper connections
+// shatter into such nodes, which fell 0.41 m deep (measured once, with a temporary print).
 TEST(ExtremeForest, ABrokenTopDoesNotFallThroughItsStump) {
     const Scene scene(singleTree({"tree.dbh_cm=80", "block.speed_m_s=10"}));
     BlockMotion m(scene, drawRelease(scene, 1));

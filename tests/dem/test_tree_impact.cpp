@@ -128,8 +128,9 @@ TEST(TreeImpact, StemBreaksOnlyWhenTheBlockCarriesEnoughEnergy) {
     auto speedFor = [&](double energy) { return std::sqrt(2 * energy / mass); };
     // Half the bound: it cannot break, whatever the dynamics. The bound is elastic, and so is the
     // contact here: a crushing one takes most of the block's energy (22 of the 27.8 kJ of twenty
-    // times the bound), and the stem, converged (0.125 and 0.0625 m uniform, or the foot zone at 0.5
-    // and 0.25 m), then keeps its bole; only a 0.5 m lowest connection broke it there.
+    // times the bound), and the converged stem (uniform at 0.125 and 0.0625 m, or foot-zoned at 0.5,
+    // 0.25 and 0.125 m) then keeps its bole; only the uniform stem at 0.5 and 0.25 m broke its lowest
+    // connection there (docs/model-stems.md, "A bole that holds").
     const std::vector<std::string> at = {"tree.dbh_cm=25", "tree.coppice=true", "block.shape=sphere", "block.impact_height_m=0.55",
                                          "block.launch_distance_m=0.9", "tree_contact.crushing_strength_pa=0"};
     auto with = [&](double speed) {
@@ -271,9 +272,10 @@ TEST(TreeImpact, WhatStopsMovingIsBookedAsPiecesOrStandingSway) {
 // The default trees (stem.parameters = calibrated: Fig. 3 on 3 sections, wood's constant loss factor,
 // the stem crushing under the block, anchorage from the stem's weight letting go at 25 deg) give the
 // same impact at 0.5 and 0.25 m: the tree's own terms over the impact within the 5 % the issue asks of
-// the single-tree matrix, the block's exit energy within 5 % of the impact energy (measured: 20 cm at
-// 10 m/s 40.9 and 42.1 kJ, block 2.1 and 3.0 kJ of 68 kJ; 15 cm at 15 m/s 12.9 and 12.7 kJ, block
-// 126.5 and 129.6 kJ of 152 kJ). The paper's trees (toe2018) give 28.1 and 12.5 kJ for the first.
+// the single-tree matrix, the block's exit energy within 5 % of the impact energy (measured, with the
+// default's foot zone: 20 cm at 10 m/s 41.6 and 42.4 kJ, block 3.2 and 1.6 kJ of 68 kJ; 15 cm at 15 m/s
+// 13.6 and 13.4 kJ, block 128.7 and 128.7 kJ of 152 kJ). The paper's trees (toe2018) give 28.1 and
+// 12.5 kJ for the first.
 TEST(TreeImpact, DefaultStemAgreesAtHalfTheSpacing) {
     for (const auto& [dbh, speed] : {std::pair<const char*, const char*>{"20", "10"}, {"15", "15"}}) {
         const TreeImpact coarse = impactOn(dbh, speed, {"stem.node_spacing_m=0.5"});
@@ -297,24 +299,33 @@ TEST(TreeImpact, SoftenedAxialSpringsGiveWoodsImpact) {
     expectTheSameImpacts("softened", {"stem.foot_zone_m=0"}, "wood's axial springs", {"stem.foot_zone_m=0", "stem.axial_softening=1"}, 0.02);
 }
 
+// On the default's foot zone the softening moves single impacts more (its lowest metre's axial springs
+// are softened twice over): held to issue 11's 5 % between a resolution and its refinement on the same
+// three impacts. Measured: tree 1.5, 0.1 and 1.4 %, block 0.9, 0.1 and 2.4 % (and on the 25 cm stem at
+// 14, 16 and 17 m/s the block 1.3, 5.0 and 0.4 %: docs/model-stems.md, "The foot zone").
+TEST(TreeImpact, SoftenedAxialSpringsOnTheFootZoneWithinFivePerCent) {
+    expectTheSameImpacts("softened", {}, "wood's axial springs", {"stem.axial_softening=1"}, 0.05);
+}
+
 // stem.upper_spacing_factor (docs/model-stems.md, "A graded stem"): the stem cut at twice the node
 // spacing in its crown (1 m above the crown base) gives the impact of the stem cut at 0.5 m all the
 // way up (the default; both with its foot zone) within the 5 % of the impact energy issue 11 asks
 // between a resolution and half of it, for the tree's own terms and the block's exit energy, on the
-// impacts the softening is held to above. Measured without the zone: tree 1.1, 0.3 and 1.6 %, block
-// 0.2, 1.6 and 2.4 %.
+// impacts the softening is held to above. Measured: tree 0.2, 0.3 and 0.2 %, block 0.7, 0.0 and
+// 0.5 % (without the zone: tree 1.1, 0.3 and 1.6 %, block 0.2, 1.6 and 2.4 %).
 TEST(TreeImpact, GradedStemGivesTheUniformStemsImpact) {
     expectTheSameImpacts("graded", {"stem.upper_spacing_factor=2"}, "uniform", {}, 0.05);
 }
 
 // And the graded stem is itself a resolution: at half the node spacing (0.25 m to the crown base, 0.5 m
 // in the crown) the same impacts within the same 5 % of the impact energy, the matrix's measure.
-// Measured: tree 0.0, 0.5 and 2.4 %, block 1.0, 0.1 and 4.2 % (the uniform stem: 1.8, 0.1, 0.3 % and
-// 1.2, 2.1, 1.4 %, DefaultStemAgreesAtHalfTheSpacing and the matrix). And the 20 cm stem at 10 m/s
-// within 5 % of the tree's own terms, as DefaultStemAgreesAtHalfTheSpacing asks of the default: with
-// the zone ending at 4 m its whip broke the bole at 7.2-8.4 m, in the coarse part, and its terms moved
-// by 7.9 % (measured now: 0.1 %). The 15 and 25 cm stems at 15 m/s move by 5.8 and 6.6 % of their
-// terms, which is why the graded stem is not the default (docs/model-stems.md).
+// Measured, with the default's foot zone: tree 1.1, 0.0 and 1.5 %, block 2.8, 0.1 and 1.6 % (without
+// it: tree 0.0, 0.5 and 2.4 %, block 1.0, 0.1 and 4.2 %). And the 20 cm stem at 10 m/s within 5 % of
+// the tree's own terms, as DefaultStemAgreesAtHalfTheSpacing asks of the default: with the zone ending
+// at 4 m its whip broke the bole at 7.2-8.4 m, in the coarse part, and its terms moved by 7.9 %
+// (measured now: 1.8 %). Without the foot zone the 15 and 25 cm stems at 15 m/s moved by 5.8 and 6.6 %
+// of their terms, which is why the graded stem was not made the default (docs/model-stems.md); with
+// it, 0.4 and 3.7 %, not yet measured at the stand level.
 TEST(TreeImpact, GradedStemAgreesAtHalfTheSpacing) {
     const std::vector<std::string> coarse{"stem.upper_spacing_factor=2"},
         fine{"stem.upper_spacing_factor=2", "stem.node_spacing_m=0.25"};
@@ -345,8 +356,8 @@ TEST(TreeImpact, FootZoneResolvesAnImpactJustAboveTheFoot) {
 }
 
 // And on the impacts the other resolutions are held to (1 m up), the foot-zoned stem at 0.5 and at
-// 0.25 m within the same 5 % of the impact energy. Measured: tree 1.1, 0.2 and 1.4 %, block 1.9, 0.3
-// and 2.5 %.
+// 0.25 m within the same 5 % of the impact energy. Measured: tree 1.2, 0.1 and 1.5 %, block 2.2, 0.1
+// and 2.0 %.
 TEST(TreeImpact, FootZonedStemAgreesAtHalfTheSpacing) {
     expectTheSameImpacts("foot zone, 0.5 m", {"stem.foot_zone_m=1"}, "foot zone, 0.25 m",
                          {"stem.foot_zone_m=1", "stem.node_spacing_m=0.25"}, 0.05);

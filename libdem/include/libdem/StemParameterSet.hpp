@@ -18,7 +18,8 @@ const char* name(StemParameterSet set);
 
 // The stem and its contacts of a set; the keys of a scene then change single values of it.
 void apply(StemParameterSet set, StemParams& stem, StemContactParams& contact);
-// The stem's part of a set alone (a stem built apart from any scene).
+// The stem's part of a set alone (a stem built apart from any scene). The calibrated set's foot zone
+// (1 m) asks a node spacing of at most 1 m; a scene raises it to a coarser one (SceneConfig).
 StemParams stemParameters(StemParameterSet set);
 
 }  // namespace sylva::dem

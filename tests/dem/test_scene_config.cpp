@@ -160,31 +160,6 @@ TEST(SceneConfigParser, StemParameterSetsAreNamed) {
     EXPECT_THROW(sceneFromOverrides({"stem.root_failure_rotation_deg=-5"}), sylva::InputError);
 }
 
-// The calibrated set's foot zone is 1 m, or the node spacing where the scene sets one coarser (a
-// zone shorter than the spacing has no connection of its own); toe2018 has none; a zone the scene
-// sets shorter than the spacing is refused with its key, its file and its line.
-TEST(SceneConfigParser, TheFootZoneIsTheCalibratedSetsAndGrowsToACoarserSpacing) {
-    EXPECT_EQ(sceneFromOverrides({}).stem.footZone, 1.0);
-    EXPECT_EQ(sceneFromOverrides({"stem.node_spacing_m=2"}).stem.footZone, 2.0);
-    EXPECT_EQ(sceneFromOverrides({"stem.node_spacing_m=0.25"}).stem.footZone, 1.0);
-    EXPECT_EQ(sceneFromOverrides({"stem.parameters=toe2018", "stem.node_spacing_m=2"}).stem.footZone, 0.0);
-    EXPECT_EQ(sceneFromOverrides({"stem.foot_zone_m=0", "stem.node_spacing_m=2"}).stem.footZone, 0.0);
-    try {
-        sceneFromOverrides({"stem.foot_zone_m=1", "stem.node_spacing_m=2"});
-        FAIL() << "a zone shorter than the spacing accepted";
-    } catch (const sylva::InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("--set stem.foot_zone_m"), std::string::npos) << e.what();
-    }
-    try {
-        loadScene(writeScene("zone.ini", "[terrain]\nwidth_m = 10\n[stem]\nnode_spacing_m = 2\nfoot_zone_m = 1\n"));
-        FAIL() << "a zone shorter than the spacing accepted";
-    } catch (const sylva::InputError& e) {
-        const std::string what = e.what();
-        EXPECT_NE(what.find("zone.ini:5"), std::string::npos) << what;
-        EXPECT_NE(what.find("stem.foot_zone_m"), std::string::npos) << what;
-    }
-}
-
 // The fracture energy is an option: none in either set, and a value typed in the wrong unit (sigma_Rupt's
 // Pa) is refused with the likely mistake.
 TEST(SceneConfigParser, TheFractureEnergyIsOffByDefaultAndReadInJoulesPerSquareMetre) {
@@ -222,6 +197,22 @@ std::string fileRefusal(const std::string& path, const std::vector<std::string>&
     return {};
 }
 }  // namespace
+
+// The calibrated set's foot zone is 1 m, or the node spacing where the scene sets one coarser (a
+// zone shorter than the spacing has no connection of its own); toe2018 has none; a zone the scene
+// sets shorter than the spacing is refused with its key, its file and its line.
+TEST(SceneConfigParser, TheFootZoneIsTheCalibratedSetsAndGrowsToACoarserSpacing) {
+    EXPECT_EQ(sceneFromOverrides({}).stem.footZone, 1.0);
+    EXPECT_EQ(sceneFromOverrides({"stem.node_spacing_m=2"}).stem.footZone, 2.0);
+    EXPECT_EQ(sceneFromOverrides({"stem.node_spacing_m=0.25"}).stem.footZone, 1.0);
+    EXPECT_EQ(sceneFromOverrides({"stem.parameters=toe2018", "stem.node_spacing_m=2"}).stem.footZone, 0.0);
+    EXPECT_EQ(sceneFromOverrides({"stem.foot_zone_m=0", "stem.node_spacing_m=2"}).stem.footZone, 0.0);
+    const std::string set = refusal({"stem.foot_zone_m=1", "stem.node_spacing_m=2"});
+    EXPECT_NE(set.find("--set stem.foot_zone_m"), std::string::npos) << set;
+    const std::string file = fileRefusal(writeScene("zone.ini", "[terrain]\nwidth_m = 10\n[stem]\nnode_spacing_m = 2\nfoot_zone_m = 1\n"));
+    EXPECT_NE(file.find("zone.ini:5"), std::string::npos) << file;
+    EXPECT_NE(file.find("stem.foot_zone_m"), std::string::npos) << file;
+}
 
 // NaN and infinities parse as numbers; none may reach the simulator (issue 13: a NaN wake margin
 // silently switched the forest off, an infinite block volume ran out of memory).

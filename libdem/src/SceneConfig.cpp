@@ -453,7 +453,8 @@ SceneConfig load(const std::string* path, const std::vector<std::string>& overri
     requireRead("soil.damping_ratio", !vm.count("soil.restitution"), {"soil.restitution"},
                 "soil.restitution is given too and sets the damping; give one of the two");
     // The calibrated set's metre of foot zone, under a node spacing coarser than it, becomes the lowest
-    // connection cut in two: refusing a scene for a key it never set would teach nothing.
+    // connection cut in two: refusing a scene for a key it never set would teach nothing. A zone the
+    // scene set is refused here, with its key and line, rather than by the stem's own check.
     if (c.stem.footZone > 0 && c.stem.footZone < c.stem.nodeSpacing) {
         if (!vm["stem.foot_zone_m"].defaulted())
             throw refuse("stem.foot_zone_m", "stem.foot_zone_m = " + text(c.stem.footZone) + " m is shorter than stem.node_spacing_m = " +
